@@ -1,0 +1,27 @@
+# prunesfm_add_module(NAME SOURCES ... DEPENDS ...)
+# One static library per folder of src/sfm_pruning, named sfm_pruning_<NAME>. Modules depend on
+# each other only along the data flow (sfm <- io, geometry <- view_graph <- global <- pruning), so
+# a change in one module rebuilds only the modules downstream of it.
+function(prunesfm_add_module name)
+  cmake_parse_arguments(ARG "" "" "SOURCES;DEPENDS" ${ARGN})
+  set(target sfm_pruning_${name})
+  add_library(${target} STATIC ${ARG_SOURCES})
+  add_library(sfm_pruning::${name} ALIAS ${target})
+  target_include_directories(${target} PUBLIC ${PROJECT_SOURCE_DIR}/src)
+  target_compile_options(${target} PRIVATE ${PRUNESFM_WARNING_FLAGS})
+  target_link_libraries(${target} PUBLIC ${ARG_DEPENDS})
+  set_target_properties(${target} PROPERTIES POSITION_INDEPENDENT_CODE ON)
+endfunction()
+
+# prunesfm_add_test(NAME SOURCES ... DEPENDS ...)
+# One GoogleTest executable per module folder of tests/; every TEST becomes a ctest entry.
+# Tests find the shared data (../shared) through PRUNESFM_SHARED_DIR and skip when it is absent.
+function(prunesfm_add_test name)
+  cmake_parse_arguments(ARG "" "" "SOURCES;DEPENDS" ${ARGN})
+  add_executable(${name} ${ARG_SOURCES})
+  target_compile_options(${name} PRIVATE ${PRUNESFM_WARNING_FLAGS})
+  target_link_libraries(${name} PRIVATE ${ARG_DEPENDS} prunesfm_test_support GTest::gtest GTest::gtest_main)
+  gtest_discover_tests(${name}
+    PROPERTIES ENVIRONMENT "PRUNESFM_SHARED_DIR=${PRUNESFM_SHARED_DIR};PRUNESFM_BINARY_DIR=${PROJECT_BINARY_DIR};ASAN_OPTIONS=alloc_dealloc_mismatch=0"
+    DISCOVERY_TIMEOUT 60)
+endfunction()

@@ -1,0 +1,27 @@
+// Atomic output: every file the tools write goes to "<path>.tmp.<pid>" first and is renamed over
+// the destination only once it is complete, so a crash or a full disk never leaves a
+// half-written sfm_data.json or model behind.
+#pragma once
+
+#include <filesystem>
+#include <fstream>
+#include <functional>
+#include <string>
+
+namespace sfm_pruning {
+
+// Calls `write` with a stream opened on a temporary file beside `path`, checks the stream,
+// then renames the temporary over `path`. Throws Error naming `path` on any failure and removes
+// the temporary. `binary` selects std::ios::binary.
+void WriteFileAtomically(const std::filesystem::path& path, bool binary,
+                         const std::function<void(std::ostream&)>& write);
+
+// Writes a whole directory atomically: `write` fills a temporary sibling directory, which then
+// replaces `dir` (an existing `dir` is moved aside and deleted only after the rename succeeded).
+void WriteDirectoryAtomically(const std::filesystem::path& dir,
+                              const std::function<void(const std::filesystem::path&)>& write);
+
+// Reads a whole file into a string; throws Error naming the file when it cannot be opened.
+std::string ReadFileToString(const std::filesystem::path& path, bool binary = true);
+
+}  // namespace sfm_pruning

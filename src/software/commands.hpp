@@ -1,0 +1,13 @@
+// Every subcommand of prunesfm adds itself to the app through one of these functions, each
+// defined in commands/<name>.cpp. main.cpp calls them in the order of the help text.
+#pragma once
+
+namespace CLI {
+class App;
+}
+
+namespace prunesfm {
+
+void AddConvertCommand(CLI::App& app);
+
+}  // namespace prunesfm

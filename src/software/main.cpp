@@ -1,0 +1,39 @@
+// prunesfm: the command-line entry point. Each subcommand lives in commands/<name>.cpp.
+//
+// Exit codes: 0 success; 1 bad input or a failed step (one line on stderr naming the file and
+// the problem); CLI11's own codes (105 and up) for malformed command lines.
+#include <CLI/CLI.hpp>
+
+#include <cstdio>
+#include <exception>
+
+#include "sfm_pruning/util/error.hpp"
+#include "software/cli_support.hpp"
+#include "software/commands.hpp"
+
+int main(int argc, char** argv) {
+  std::string engines;
+  for (const char* engine : prunesfm::kEngineNames) engines += std::string(engines.empty() ? "" : ", ") + engine;
+  CLI::App app{
+      "PruneSfM: global structure-from-motion that survives repeated and symmetric structure.\n"
+      "Engines: " + engines + " (GLOBAL_PRUNED removes spurious view-graph edges first).\n"
+      "Run 'prunesfm <subcommand> --help' for the options of each step.",
+      "prunesfm"};
+  app.require_subcommand(1);
+  app.set_version_flag("--version", "prunesfm 0.1.0");
+
+  prunesfm::AddConvertCommand(app);
+
+  try {
+    app.parse(argc, argv);
+  } catch (const CLI::ParseError& e) {
+    return app.exit(e);
+  } catch (const sfm_pruning::Error& e) {
+    std::fprintf(stderr, "prunesfm: error: %s\n", e.what());
+    return 1;
+  } catch (const std::exception& e) {
+    std::fprintf(stderr, "prunesfm: error: %s\n", e.what());
+    return 1;
+  }
+  return 0;
+}
