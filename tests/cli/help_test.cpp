@@ -1,0 +1,35 @@
+#include <gtest/gtest.h>
+
+#include "run_prunesfm.hpp"
+
+namespace sfm_pruning::testing {
+namespace {
+
+TEST(Cli, HelpListsSubcommandsAndEngines) {
+  const CommandResult result = RunPrunesfm({"--help"});
+  EXPECT_EQ(result.exit_code, 0);
+  EXPECT_NE(result.out.find("convert"), std::string::npos) << result.out;
+  EXPECT_NE(result.out.find("GLOBAL"), std::string::npos);
+  EXPECT_NE(result.out.find("GLOBAL_PRUNED"), std::string::npos);
+}
+
+TEST(Cli, NoSubcommandIsAnError) {
+  const CommandResult result = RunPrunesfm({});
+  EXPECT_NE(result.exit_code, 0);
+}
+
+TEST(Cli, UnknownOptionIsAnError) {
+  const CommandResult result = RunPrunesfm({"convert", "--no_such_option", "1"});
+  EXPECT_NE(result.exit_code, 0);
+  EXPECT_FALSE(result.err.empty());
+}
+
+TEST(Cli, MissingInputFileGivesOneLineNamingTheFile) {
+  const CommandResult result = RunPrunesfm({"convert", "--input", "/nonexistent/sfm_data.json", "--output", "/tmp/x.ply"});
+  EXPECT_EQ(result.exit_code, 1);
+  EXPECT_EQ(CountLines(result.err), 1) << result.err;
+  EXPECT_NE(result.err.find("/nonexistent/sfm_data.json"), std::string::npos) << result.err;
+}
+
+}  // namespace
+}  // namespace sfm_pruning::testing
