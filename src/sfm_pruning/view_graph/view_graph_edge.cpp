@@ -1,0 +1,23 @@
+#include "sfm_pruning/view_graph/view_graph_edge.hpp"
+
+namespace sfm_pruning {
+
+std::string EdgeInvalidReasonName(EdgeInvalidReason reason) {
+  switch (reason) {
+    case EdgeInvalidReason::kNone:
+      return "none";
+    case EdgeInvalidReason::kTooFewInliers:
+      return "too_few_inliers";
+    case EdgeInvalidReason::kLowInlierRatio:
+      return "low_inlier_ratio";
+    case EdgeInvalidReason::kRotationResidual:
+      return "rotation_residual";
+    case EdgeInvalidReason::kInterSubgraphInconsistent:
+      return "inter_subgraph_inconsistent";
+    case EdgeInvalidReason::kOther:
+      return "other";
+  }
+  return "unknown";
+}
+
+}  // namespace sfm_pruning
