@@ -1,0 +1,233 @@
+#include "sfm_pruning/io/openmvg_matches.hpp"
+
+#include <algorithm>
+#include <array>
+#include <cstdint>
+#include <limits>
+#include <string>
+#include <string_view>
+#include <utility>
+#include <vector>
+
+#include "sfm_pruning/io/openmvg_binary_bytes.hpp"
+#include "sfm_pruning/io/openmvg_text_tokens.hpp"
+#include "sfm_pruning/util/atomic_file.hpp"
+#include "sfm_pruning/util/error.hpp"
+
+namespace sfm_pruning {
+namespace fs = std::filesystem;
+
+namespace {
+
+enum class MatchFileFormat { kText, kBinary };
+
+MatchFileFormat FormatFromExtension(const fs::path& path) {
+  const std::string extension = path.extension().string();
+  if (extension == ".txt") return MatchFileFormat::kText;
+  if (extension == ".bin") return MatchFileFormat::kBinary;
+  throw FileError(path.string(), "unknown match file extension '" + extension + "' (expected .txt or .bin)");
+}
+
+// cereal's PortableBinary header byte: 1 when the writer was little-endian.
+constexpr uint8_t kLittleEndianFlag = 1;
+constexpr uint8_t kBigEndianFlag = 0;
+
+std::string PairName(IndexT I, IndexT J) { return "pair (" + std::to_string(I) + ", " + std::to_string(J) + ")"; }
+
+// Collects the pairs of a file in the stored form (I < J) and applies the checks common to the
+// text and binary readers.
+class MatchCollector {
+ public:
+  MatchCollector(std::string source, const MatchReadOptions& options, MatchReadReport* report)
+      : source_(std::move(source)), options_(options), report_(report) {}
+
+  // `where` locates the pair in the file for error messages ("line 12", "offset 345").
+  void Add(IndexT I, IndexT J, std::vector<FeatureMatch> pair_matches, const std::string& where) {
+    if (I == J) throw FileError(source_, where + ": " + PairName(I, J) + " matches a view with itself");
+    if (I > J) {
+      std::swap(I, J);
+      for (FeatureMatch& m : pair_matches) std::swap(m.i, m.j);
+    }
+    if (options_.sfm_data != nullptr &&
+        (options_.sfm_data->views.count(I) == 0 || options_.sfm_data->views.count(J) == 0)) {
+      if (report_ != nullptr) {
+        ++report_->dropped_pairs;
+        report_->dropped_matches += pair_matches.size();
+      }
+      return;
+    }
+    if (options_.features != nullptr) CheckFeatureIndices(I, J, pair_matches, where);
+    if (!matches_.emplace(ViewPair{I, J}, std::move(pair_matches)).second) {
+      throw FileError(source_, where + ": " + PairName(I, J) + " is listed twice");
+    }
+  }
+
+  PairwiseMatches Take() { return std::move(matches_); }
+
+ private:
+  size_t FeatureCount(IndexT view, IndexT I, IndexT J, const std::string& where) const {
+    const auto found = options_.features->find(view);
+    if (found == options_.features->end()) {
+      throw FileError(source_, where + ": " + PairName(I, J) + ": view " + std::to_string(view) + " has no features");
+    }
+    return found->second.size();
+  }
+
+  void CheckFeatureIndices(IndexT I, IndexT J, const std::vector<FeatureMatch>& pair_matches,
+                           const std::string& where) const {
+    const size_t count_i = FeatureCount(I, I, J, where);
+    const size_t count_j = FeatureCount(J, I, J, where);
+    for (const FeatureMatch& m : pair_matches) {
+      if (m.i >= count_i || m.j >= count_j) {
+        const bool bad_i = m.i >= count_i;
+        throw FileError(source_, where + ": " + PairName(I, J) + ": feature index " +
+                                     std::to_string(bad_i ? m.i : m.j) + " out of range for view " +
+                                     std::to_string(bad_i ? I : J) + " (" +
+                                     std::to_string(bad_i ? count_i : count_j) + " features)");
+      }
+    }
+  }
+
+  std::string source_;
+  const MatchReadOptions& options_;
+  MatchReadReport* report_;
+  PairwiseMatches matches_;
+};
+
+PairwiseMatches ReadTextMatches(const fs::path& path, const MatchReadOptions& options, MatchReadReport* report) {
+  const std::string text = ReadFileToString(path, false);
+  const std::string source = path.string();
+  MatchCollector collector(source, options, report);
+  openmvg_text::TokenScanner scanner(text);
+  std::string_view token;
+  std::string context = "the first pair";  // where we are, for errors; built once per pair
+  // Reads the next token as an unsigned number no larger than `max_value`.
+  const auto next_number = [&](const char* what, uint64_t max_value) {
+    if (!scanner.Next(&token)) {
+      throw FileError(source, std::string("truncated file: missing ") + what + " of " + context + " at the end");
+    }
+    uint64_t value = 0;
+    if (!openmvg_text::ParseUInt64(token, &value) || value > max_value) {
+      throw FileError(source, "line " + std::to_string(scanner.line()) + ": expected " + what + " of " + context +
+                                  ", found '" + std::string(token) + "'");
+    }
+    return value;
+  };
+  constexpr uint64_t kMaxIndex = std::numeric_limits<IndexT>::max();
+  std::string_view first_token;
+  while (scanner.Next(&first_token)) {
+    uint32_t I = 0;
+    if (!openmvg_text::ParseUInt32(first_token, &I)) {
+      throw FileError(source, "line " + std::to_string(scanner.line()) + ": expected a view id, found '" +
+                                  std::string(first_token) + "'");
+    }
+    const std::string where = "line " + std::to_string(scanner.line());
+    context = "the pair starting at " + where;
+    const auto J = static_cast<IndexT>(next_number("the second view id", kMaxIndex));
+    context = PairName(I, J);
+    const uint64_t count = next_number("the match count", std::numeric_limits<uint64_t>::max());
+    std::vector<FeatureMatch> pair_matches;
+    // Each match takes at least 4 characters ("i j\n"), which bounds a corrupt count.
+    pair_matches.reserve(std::min<uint64_t>(count, text.size() / 4));
+    for (uint64_t k = 0; k < count; ++k) {
+      FeatureMatch m;
+      m.i = static_cast<IndexT>(next_number("a feature index", kMaxIndex));
+      m.j = static_cast<IndexT>(next_number("a feature index", kMaxIndex));
+      pair_matches.push_back(m);
+    }
+    collector.Add(I, J, std::move(pair_matches), where);
+  }
+  return collector.Take();
+}
+
+PairwiseMatches ReadBinaryMatches(const fs::path& path, const MatchReadOptions& options, MatchReadReport* report) {
+  const std::string bytes = ReadFileToString(path);
+  const std::string source = path.string();
+  openmvg_binary::ByteReader reader(bytes, source);
+  const auto flag = reader.Read<uint8_t>("endianness flag");
+  if (flag != kLittleEndianFlag && flag != kBigEndianFlag) {
+    throw FileError(source, "not a cereal portable binary file (endianness flag " + std::to_string(flag) + ")");
+  }
+  // We run on little-endian hosts only; a big-endian writer's integers need swapping.
+  reader.set_swap_bytes(flag == kBigEndianFlag);
+  MatchCollector collector(source, options, report);
+  const auto pair_count = reader.Read<uint64_t>("pair count");
+  constexpr size_t kPairHeaderBytes = 2 * sizeof(uint32_t) + sizeof(uint64_t);
+  constexpr size_t kMatchBytes = 2 * sizeof(uint32_t);
+  if (pair_count > reader.remaining() / kPairHeaderBytes) {
+    throw FileError(source, "truncated file: " + std::to_string(pair_count) + " pairs cannot fit in " +
+                                std::to_string(reader.remaining()) + " bytes");
+  }
+  for (uint64_t p = 0; p < pair_count; ++p) {
+    const std::string where = "offset " + std::to_string(reader.position());
+    const std::string pair_what = "pair " + std::to_string(p) + " of " + std::to_string(pair_count);
+    const auto I = reader.Read<uint32_t>(pair_what);
+    const auto J = reader.Read<uint32_t>(pair_what);
+    const auto count = reader.Read<uint64_t>("match count of " + PairName(I, J));
+    if (count > reader.remaining() / kMatchBytes) {
+      throw FileError(source, "truncated file: " + PairName(I, J) + " announces " + std::to_string(count) +
+                                  " matches but only " + std::to_string(reader.remaining()) + " bytes are left");
+    }
+    std::vector<FeatureMatch> pair_matches(count);
+    for (FeatureMatch& m : pair_matches) {
+      m.i = reader.Read<uint32_t>("match");
+      m.j = reader.Read<uint32_t>("match");
+    }
+    collector.Add(I, J, std::move(pair_matches), where);
+  }
+  if (reader.remaining() != 0) {
+    throw FileError(source, std::to_string(reader.remaining()) + " unexpected bytes after the last pair");
+  }
+  return collector.Take();
+}
+
+}  // namespace
+
+PairwiseMatches ReadOpenMvgMatches(const fs::path& path, const MatchReadOptions& options, MatchReadReport* report) {
+  if (report != nullptr) *report = {};
+  return FormatFromExtension(path) == MatchFileFormat::kText ? ReadTextMatches(path, options, report)
+                                                             : ReadBinaryMatches(path, options, report);
+}
+
+void WriteOpenMvgMatches(const fs::path& path, const PairwiseMatches& matches) {
+  if (FormatFromExtension(path) == MatchFileFormat::kText) {
+    WriteFileAtomically(path, false, [&](std::ostream& out) {
+      for (const auto& [pair, pair_matches] : matches) {
+        out << pair.first << ' ' << pair.second << '\n' << pair_matches.size() << '\n';
+        for (const FeatureMatch& m : pair_matches) out << m.i << ' ' << m.j << '\n';
+      }
+    });
+    return;
+  }
+  WriteFileAtomically(path, true, [&](std::ostream& out) {
+    openmvg_binary::WriteRaw<uint8_t>(out, kLittleEndianFlag);
+    openmvg_binary::WriteRaw<uint64_t>(out, matches.size());
+    for (const auto& [pair, pair_matches] : matches) {
+      openmvg_binary::WriteRaw<uint32_t>(out, pair.first);
+      openmvg_binary::WriteRaw<uint32_t>(out, pair.second);
+      openmvg_binary::WriteRaw<uint64_t>(out, pair_matches.size());
+      for (const FeatureMatch& m : pair_matches) {
+        openmvg_binary::WriteRaw<uint32_t>(out, m.i);
+        openmvg_binary::WriteRaw<uint32_t>(out, m.j);
+      }
+    }
+  });
+}
+
+fs::path FindOpenMvgMatchesFile(const fs::path& matches_dir, const fs::path& explicit_file) {
+  if (!explicit_file.empty()) {
+    if (!fs::is_regular_file(explicit_file)) throw FileError(explicit_file.string(), "match file not found");
+    return explicit_file;
+  }
+  static const std::array<const char*, 6> kPreferredNames = {
+      "matches.e.bin", "matches.e.txt", "matches.f.bin", "matches.f.txt", "matches.putative.bin",
+      "matches.putative.txt"};
+  for (const char* name : kPreferredNames) {
+    const fs::path candidate = matches_dir / name;
+    if (fs::is_regular_file(candidate)) return candidate;
+  }
+  throw FileError(matches_dir.string(),
+                  "no match file (looked for matches.{e,f,putative}.{bin,txt}); give one explicitly");
+}
+
+}  // namespace sfm_pruning
