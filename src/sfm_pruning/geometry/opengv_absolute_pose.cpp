@@ -1,0 +1,108 @@
+#include "sfm_pruning/geometry/opengv_absolute_pose.hpp"
+
+// OpenGV's sac headers use INT_MAX, pow and std::numeric_limits without including them.
+#include <algorithm>
+#include <climits>
+#include <cmath>
+#include <limits>
+#include <memory>
+#include <string>
+
+#include <opengv/absolute_pose/CentralAbsoluteAdapter.hpp>
+#include <opengv/sac_problems/absolute_pose/AbsolutePoseSacProblem.hpp>
+#include <opengv/sac/Ransac.hpp>
+
+#include "sfm_pruning/geometry/opengv_boundary.hpp"
+#include "sfm_pruning/geometry/triangulation.hpp"
+
+namespace sfm_pruning {
+namespace {
+
+using SacProblem = opengv::sac_problems::absolute_pose::AbsolutePoseSacProblem;
+
+// Correspondences whose point lies in front of the camera within the angular threshold.
+std::vector<int> SelectInliers(const Pose& pose, const std::vector<Eigen::Vector3d>& bearings,
+                               const std::vector<Eigen::Vector3d>& points_world, double max_error_rad) {
+  std::vector<int> inliers;
+  for (size_t k = 0; k < bearings.size(); ++k) {
+    const Eigen::Vector3d point_camera = pose.ToCamera(points_world[k]);
+    if (IsInFront(pose, bearings[k], points_world[k]) &&
+        AngleBetweenVectors(point_camera, bearings[k]) <= max_error_rad) {
+      inliers.push_back(static_cast<int>(k));
+    }
+  }
+  return inliers;
+}
+
+AbsolutePoseResult Failure(const std::string& reason) {
+  AbsolutePoseResult result;
+  result.reason = reason;
+  return result;
+}
+
+}  // namespace
+
+double AbsolutePoseThresholdRad(const AbsolutePoseOptions& options) {
+  if (options.max_reprojection_error_px > 0.0 && options.focal_length_px > 0.0) {
+    return std::atan(options.max_reprojection_error_px / options.focal_length_px);
+  }
+  return DegToRad(options.max_angular_error_deg);
+}
+
+AbsolutePoseResult EstimateAbsolutePose(const std::vector<Eigen::Vector3d>& bearings,
+                                        const std::vector<Eigen::Vector3d>& points_world,
+                                        const AbsolutePoseOptions& options) {
+  if (bearings.size() != points_world.size()) return Failure("bearings and points differ in size");
+  const opengv::bearingVectors_t opengv_bearings = ToOpenGVVectors(bearings);
+  const opengv::points_t opengv_points = ToOpenGVVectors(points_world);
+  opengv::absolute_pose::CentralAbsoluteAdapter adapter(opengv_bearings, opengv_points);  // keeps references
+  const auto algorithm = options.solver == AbsolutePoseOptions::Solver::kP3pKneip ? SacProblem::KNEIP
+                                                                                  : SacProblem::EPNP;
+  // make_shared, never new: see docs/dependencies.md §0 (aligned operator delete in libopengv).
+  const auto problem = std::make_shared<SacProblem>(adapter, algorithm, /*randomSeed=*/false);
+  // Checked here because OpenGV prints to stderr instead of failing when the sample is too big.
+  const size_t needed = std::max<size_t>(problem->getSampleSize(), options.min_num_inliers);
+  if (bearings.size() < needed) {
+    return Failure("too few correspondences: " + std::to_string(bearings.size()) + " < " + std::to_string(needed));
+  }
+  SeedOpenGVSampler(options.seed, problem.get());
+
+  const double max_error_rad = AbsolutePoseThresholdRad(options);
+  opengv::sac::Ransac<SacProblem> ransac;
+  ransac.sac_model_ = problem;
+  ransac.threshold_ = OpenGVThresholdFromAngle(max_error_rad);
+  ransac.max_iterations_ = options.max_iterations;
+  ransac.probability_ = options.confidence;
+  if (!ransac.computeModel(/*debug_verbosity_level=*/0)) return Failure("RANSAC found no model");
+  if (!ransac.model_coefficients_.allFinite()) return Failure("RANSAC model is degenerate");
+
+  Pose pose = PoseFromOpenGV(ransac.model_coefficients_);
+  std::vector<int> inliers = SelectInliers(pose, bearings, points_world, max_error_rad);
+  for (int round = 0; round < options.refinement_rounds; ++round) {
+    if (inliers.size() < static_cast<size_t>(problem->getSampleSize())) break;
+    opengv::transformation_t refined_coefficients;
+    problem->optimizeModelCoefficients(inliers, PoseToOpenGV(pose), refined_coefficients);
+    if (!refined_coefficients.allFinite()) break;
+    const Pose refined = PoseFromOpenGV(refined_coefficients);
+    std::vector<int> refined_inliers = SelectInliers(refined, bearings, points_world, max_error_rad);
+    // Keep the refinement unless it loses a noticeable part of the support.
+    if (refined_inliers.size() < inliers.size() * 95 / 100) break;
+    pose = refined;
+    inliers = std::move(refined_inliers);
+  }
+
+  AbsolutePoseResult result;
+  result.pose = pose;
+  result.num_ransac_iterations = ransac.iterations_;
+  result.num_inliers = static_cast<int>(inliers.size());
+  result.inliers = std::move(inliers);
+  if (result.num_inliers < options.min_num_inliers) {
+    result.reason = "too few inliers: " + std::to_string(result.num_inliers) + " < " +
+                    std::to_string(options.min_num_inliers);
+    return result;
+  }
+  result.success = true;
+  return result;
+}
+
+}  // namespace sfm_pruning

@@ -1,0 +1,56 @@
+// Calibrated relative pose from bearing-vector correspondences: 5-point RANSAC (OpenGV's
+// CentralRelativePoseSacProblem, Stewenius or Nister), cheirality disambiguation of the four
+// poses sharing the essential matrix, Ceres refinement on the inliers, inlier re-selection.
+// The result is in pose.hpp's convention (X_j = R_ij X_i + t_ij) with |t_ij| = 1.
+#pragma once
+
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include <Eigen/Core>
+
+#include "sfm_pruning/sfm/pose.hpp"
+
+namespace sfm_pruning {
+
+struct RelativePoseOptions {
+  enum class Solver { kStewenius, kNister };
+  Solver solver = Solver::kStewenius;
+  // Inlier threshold on the angular epipolar error (epipolar_geometry.hpp), also given to
+  // OpenGV's RANSAC as 1 - cos(angle). 0.25 deg is about 4 px at a 1000 px focal length.
+  double max_angular_error_deg = 0.25;
+  // RANSAC stops at this many hypotheses or earlier once `confidence` is reached. OpenGV's
+  // 5-point problem samples 8 correspondences (5 + 3 to pick among the essential matrices), so
+  // the iterations needed grow as 1 / inlier_ratio^8: 66 at 75 % inliers, ~1.7k at 50 %.
+  int max_iterations = 5000;
+  double confidence = 0.999;
+  // Seed of OpenGV's sampler; same input + same seed = same output.
+  uint64_t seed = 0;
+  // Ceres refinement rounds on the inliers, each followed by inlier re-selection; 0 disables.
+  int refinement_rounds = 2;
+  // Drop inliers that triangulate behind either camera. Rays whose parallax is below the
+  // inlier threshold are kept: their depth sign is noise (points at infinity).
+  bool reject_points_behind = true;
+};
+
+struct RelativePoseResult {
+  bool success = false;
+  std::string reason;  // why it failed; empty on success
+  RelativePose relative_pose;  // i -> j, |t| = 1
+  std::vector<int> inliers;    // indices into the input arrays, increasing
+  int num_inliers = 0;
+  // Inliers triangulated in front of both cameras (a subset when reject_points_behind is off,
+  // equal to the inliers with parallax otherwise).
+  int num_inliers_in_front = 0;
+  int num_ransac_iterations = 0;
+};
+
+// `bearings_i[k]` and `bearings_j[k]` are the unit camera-frame bearings of match k in views i
+// and j. Fails (success = false, with a reason) on mismatched sizes, too few correspondences for
+// the solver (8), or no model found.
+RelativePoseResult EstimateRelativePose(const std::vector<Eigen::Vector3d>& bearings_i,
+                                        const std::vector<Eigen::Vector3d>& bearings_j,
+                                        const RelativePoseOptions& options = {});
+
+}  // namespace sfm_pruning

@@ -1,0 +1,37 @@
+// Nonlinear refinement of a calibrated relative pose on its inlier correspondences (Ceres).
+// The rotation is updated multiplicatively (R = Exp(delta) R_0, well conditioned at any angle)
+// and the translation lives on the unit sphere (ceres::SphereManifold), so the scale gauge is
+// fixed exactly: the result always has |t| = 1.
+#pragma once
+
+#include <vector>
+
+#include <Eigen/Core>
+
+#include "sfm_pruning/sfm/pose.hpp"
+
+namespace sfm_pruning {
+
+struct RelativePoseRefinementOptions {
+  // Scale of the Cauchy loss on the angular epipolar error; <= 0 means plain least squares.
+  // Refinement runs on RANSAC inliers, so this only softens the pull of borderline matches.
+  double loss_scale_rad = 0.0;
+  int max_num_iterations = 50;
+};
+
+struct RelativePoseRefinementSummary {
+  bool converged = false;  // Ceres reported a usable solution
+  double initial_cost = 0.0;
+  double final_cost = 0.0;
+};
+
+// Minimises the squared angular epipolar errors (epipolar_geometry.hpp) of the correspondences
+// `indices` of `bearings_i` / `bearings_j`, starting from and writing to `relative_ij`.
+// Needs at least 5 correspondences; returns converged = false (pose untouched) otherwise.
+RelativePoseRefinementSummary RefineRelativePose(const std::vector<Eigen::Vector3d>& bearings_i,
+                                                 const std::vector<Eigen::Vector3d>& bearings_j,
+                                                 const std::vector<int>& indices,
+                                                 const RelativePoseRefinementOptions& options,
+                                                 RelativePose* relative_ij);
+
+}  // namespace sfm_pruning
