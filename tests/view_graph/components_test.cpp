@@ -7,18 +7,11 @@
 namespace sfm_pruning {
 namespace {
 
-using testing::AddWeightedEdge;
-
 // Components {1,2,3}, {5,6,7}, {8,9}, {0}, {4}: 4 reaches 3 only through an invalid edge.
 ViewGraph FiveComponents() {
   ViewGraph graph;
   for (IndexT id = 0; id < 10; ++id) graph.AddNode(id);
-  AddWeightedEdge(&graph, 6, 7, 1);
-  AddWeightedEdge(&graph, 5, 6, 1);
-  AddWeightedEdge(&graph, 8, 9, 100);
-  AddWeightedEdge(&graph, 2, 3, 1);
-  AddWeightedEdge(&graph, 1, 2, 1);
-  AddWeightedEdge(&graph, 3, 4, 50);
+  testing::AddWeightedEdges(&graph, {{6, 7, 1}, {5, 6, 1}, {8, 9, 100}, {2, 3, 1}, {1, 2, 1}, {3, 4, 50}});
   graph.InvalidateEdge(3, 4, {EdgeInvalidReason::kTooFewInliers, 12, 30});
   return graph;
 }

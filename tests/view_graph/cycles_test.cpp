@@ -103,11 +103,7 @@ TEST(Cycles, CapIsRespected) {
 TEST(LoopRotationError, ZeroForConsistentRelativePoses) {
   const std::map<IndexT, Pose> poses = testing::RandomPoses(8, 21);
   ViewGraph graph;
-  std::vector<ViewPair> pairs;
-  for (IndexT a = 0; a < 8; ++a) {
-    for (IndexT b = a + 1; b < 8; ++b) pairs.push_back({a, b});
-  }
-  testing::AddEdgesFromPoses(&graph, poses, pairs);
+  testing::AddEdgesFromPoses(&graph, poses, testing::AllPairs(8));
   const CycleSearchResult result = FindBoundedCycles(graph);
   ASSERT_EQ(result.num_triangles, 56u);  // C(8, 3)
   for (const ViewCycle& cycle : result.cycles) EXPECT_LT(LoopRotationErrorDeg(graph, cycle), 1e-5);
@@ -125,14 +121,10 @@ bool LoopUsesEdge(const ViewCycle& cycle, IndexT a, IndexT b) {
 TEST(LoopRotationError, EqualsAPlantedEdgeError) {
   const std::map<IndexT, Pose> poses = testing::RandomPoses(7, 4);
   ViewGraph graph;
-  std::vector<ViewPair> pairs;
-  for (IndexT a = 0; a < 7; ++a) {
-    for (IndexT b = a + 1; b < 7; ++b) pairs.push_back({a, b});
-  }
-  testing::AddEdgesFromPoses(&graph, poses, pairs);
+  testing::AddEdgesFromPoses(&graph, poses, testing::AllPairs(7));
   // Corrupt edge (2, 3) by 7° about an arbitrary axis.
-  const Eigen::Matrix3d error = Eigen::AngleAxisd(DegToRad(7.0), Eigen::Vector3d(1, -2, 0.5).normalized())
-                                    .toRotationMatrix();
+  const Eigen::Matrix3d error =
+      Eigen::AngleAxisd(DegToRad(7.0), Eigen::Vector3d(1, -2, 0.5).normalized()).toRotationMatrix();
   RelativePose& corrupted = graph.MutableEdge(2, 3)->relative_pose;
   corrupted.rotation = error * corrupted.rotation;
 

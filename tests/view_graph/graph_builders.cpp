@@ -10,6 +10,18 @@ void AddWeightedEdge(ViewGraph* graph, IndexT a, IndexT b, double weight) {
   graph->AddEdge(MakeViewPair(a, b), edge);
 }
 
+void AddWeightedEdges(ViewGraph* graph, const std::vector<WeightedPair>& edges) {
+  for (const WeightedPair& edge : edges) AddWeightedEdge(graph, edge.a, edge.b, edge.weight);
+}
+
+std::vector<ViewPair> AllPairs(IndexT num_nodes) {
+  std::vector<ViewPair> pairs;
+  for (IndexT a = 0; a < num_nodes; ++a) {
+    for (IndexT b = a + 1; b < num_nodes; ++b) pairs.push_back({a, b});
+  }
+  return pairs;
+}
+
 void AddClique(ViewGraph* graph, const std::vector<IndexT>& ids, double weight) {
   for (size_t x = 0; x < ids.size(); ++x) {
     for (size_t y = x + 1; y < ids.size(); ++y) AddWeightedEdge(graph, ids[x], ids[y], weight);

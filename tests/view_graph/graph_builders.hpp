@@ -14,6 +14,17 @@ namespace sfm_pruning::testing {
 // Adds edge (a, b) with `weight` and an identity relative pose (structure-only tests).
 void AddWeightedEdge(ViewGraph* graph, IndexT a, IndexT b, double weight);
 
+struct WeightedPair {
+  IndexT a = 0;
+  IndexT b = 0;
+  double weight = 0.0;
+};
+// AddWeightedEdge for each entry, in order.
+void AddWeightedEdges(ViewGraph* graph, const std::vector<WeightedPair>& edges);
+
+// Every pair (a, b), a < b < num_nodes, in ViewPair order (the complete graph).
+std::vector<ViewPair> AllPairs(IndexT num_nodes);
+
 // Complete graph on `ids`, every edge of weight `weight`.
 void AddClique(ViewGraph* graph, const std::vector<IndexT>& ids, double weight);
 

@@ -7,8 +7,6 @@
 namespace sfm_pruning {
 namespace {
 
-using testing::AddWeightedEdge;
-
 // Hand-made graph (weights = inliers):
 //   (0,1) 10  (1,2) 8  (2,3) 6  (2,4) 4  (3,4) 4  (0,2) 3  (1,3) 2  (0,4) 1,
 //   plus (0,3) 100 flagged invalid, which must be ignored.
@@ -19,15 +17,9 @@ using testing::AddWeightedEdge;
 // BFS from 2, children by increasing id: 2, 1, 3, 4, then 0 (child of 1).
 ViewGraph HandMadeGraph() {
   ViewGraph graph;
-  AddWeightedEdge(&graph, 0, 1, 10);
-  AddWeightedEdge(&graph, 1, 2, 8);
-  AddWeightedEdge(&graph, 2, 3, 6);
-  AddWeightedEdge(&graph, 3, 4, 4);
-  AddWeightedEdge(&graph, 2, 4, 4);
-  AddWeightedEdge(&graph, 0, 2, 3);
-  AddWeightedEdge(&graph, 1, 3, 2);
-  AddWeightedEdge(&graph, 0, 4, 1);
-  AddWeightedEdge(&graph, 0, 3, 100);
+  testing::AddWeightedEdges(
+      &graph,
+      {{0, 1, 10}, {1, 2, 8}, {2, 3, 6}, {3, 4, 4}, {2, 4, 4}, {0, 2, 3}, {1, 3, 2}, {0, 4, 1}, {0, 3, 100}});
   graph.InvalidateEdge(0, 3, {EdgeInvalidReason::kRotationResidual, 40, 10});
   return graph;
 }
@@ -54,9 +46,7 @@ TEST(MaximumSpanningTree, EqualDegreesPickSmallestIdRoot) {
 
 TEST(MaximumSpanningTree, DisconnectedGraphSpansTheRootComponent) {
   ViewGraph graph;
-  AddWeightedEdge(&graph, 0, 1, 1);
-  AddWeightedEdge(&graph, 5, 6, 9);
-  AddWeightedEdge(&graph, 6, 7, 9);
+  testing::AddWeightedEdges(&graph, {{0, 1, 1}, {5, 6, 9}, {6, 7, 9}});
   graph.AddNode(3);
   const SpanningTree tree = MaximumSpanningTree(graph);
   EXPECT_EQ(tree.root, 6u);

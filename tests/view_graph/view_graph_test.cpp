@@ -9,8 +9,6 @@
 namespace sfm_pruning {
 namespace {
 
-using testing::AddWeightedEdge;
-
 // Rotation and translation direction equal to `tol`: view graphs store |t| = 1.
 void ExpectSameRelativeDirection(const RelativePose& actual, const RelativePose& expected, double tol) {
   EXPECT_LT((actual.rotation - expected.rotation).norm(), tol);
@@ -56,10 +54,7 @@ TEST(ViewGraph, OrientedRelativePoseMatchesPoseHelpersBothWays) {
 
 TEST(ViewGraph, InvalidEdgesStayButAreSkippedByValidQueries) {
   ViewGraph graph;
-  AddWeightedEdge(&graph, 0, 1, 5);
-  AddWeightedEdge(&graph, 1, 2, 7);
-  AddWeightedEdge(&graph, 0, 2, 9);
-  AddWeightedEdge(&graph, 2, 3, 1);
+  testing::AddWeightedEdges(&graph, {{0, 1, 5}, {1, 2, 7}, {0, 2, 9}, {2, 3, 1}});
   graph.AddNode(9);
   EXPECT_EQ(graph.NumValidEdges(), 4u);
   EXPECT_DOUBLE_EQ(graph.WeightedDegree(2), 17.0);
@@ -97,10 +92,7 @@ TEST(ViewGraph, InvalidEdgesStayButAreSkippedByValidQueries) {
 
 TEST(ViewGraph, InducedSubgraphKeepsEdgesAndFlagsInside) {
   ViewGraph graph;
-  AddWeightedEdge(&graph, 0, 1, 5);
-  AddWeightedEdge(&graph, 1, 2, 7);
-  AddWeightedEdge(&graph, 0, 2, 9);
-  AddWeightedEdge(&graph, 2, 3, 1);
+  testing::AddWeightedEdges(&graph, {{0, 1, 5}, {1, 2, 7}, {0, 2, 9}, {2, 3, 1}});
   graph.InvalidateEdge(1, 2, {EdgeInvalidReason::kInterSubgraphInconsistent, 6.0, 5.0});
 
   const ViewGraph sub = graph.InducedSubgraph({0, 1, 2, 77});  // 77 is not a node: ignored
@@ -118,9 +110,7 @@ TEST(ViewGraph, InducedSubgraphKeepsEdgesAndFlagsInside) {
 
 TEST(ViewGraph, RemoveNodesDropsTheirEdges) {
   ViewGraph graph;
-  AddWeightedEdge(&graph, 0, 1, 5);
-  AddWeightedEdge(&graph, 1, 2, 7);
-  AddWeightedEdge(&graph, 2, 3, 1);
+  testing::AddWeightedEdges(&graph, {{0, 1, 5}, {1, 2, 7}, {2, 3, 1}});
   graph.RemoveNodes({1, 42});
   EXPECT_EQ(graph.Nodes(), (std::set<IndexT>{0, 2, 3}));
   EXPECT_EQ(graph.ValidEdgePairs(), (std::vector<ViewPair>{{2, 3}}));

@@ -55,7 +55,8 @@ DenseAdjacency BuildDenseAdjacency(const ViewGraph& graph, const DenseNodeIndex&
 }
 
 // Step 1: each triangle a < b < c once, from its edge (a, b).
-void CollectTriangles(const DenseAdjacency& adjacency, const DenseNodeIndex& index, CycleCollector* collector) {
+void CollectTriangles(const DenseAdjacency& adjacency, const DenseNodeIndex& index,
+                      CycleCollector* collector) {
   for (size_t a = 0; a < adjacency.size(); ++a) {
     for (size_t b : adjacency[a]) {
       if (b <= a) continue;

@@ -31,8 +31,8 @@ struct CycleSearchOptions {
   size_t max_cycle_length = 7;
   // Stop after this many cycles (triangles first); CycleSearchResult::truncated tells.
   size_t max_num_cycles = 100000;
-  bool include_triangles = true;                // step 1
-  bool include_shortest_alternatives = true;    // step 2
+  bool include_triangles = true;              // step 1
+  bool include_shortest_alternatives = true;  // step 2
 };
 
 struct CycleSearchResult {

@@ -21,7 +21,8 @@ class DenseNodeIndex {
   // Throws std::out_of_range for an id that is not a node.
   size_t IndexOf(IndexT id) const {
     const auto it = std::lower_bound(ids_.begin(), ids_.end(), id);
-    if (it == ids_.end() || *it != id) throw std::out_of_range("not a view graph node: " + std::to_string(id));
+    if (it == ids_.end() || *it != id)
+      throw std::out_of_range("not a view graph node: " + std::to_string(id));
     return static_cast<size_t>(it - ids_.begin());
   }
 

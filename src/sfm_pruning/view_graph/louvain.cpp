@@ -135,7 +135,8 @@ LouvainResult DetectCommunitiesLouvain(const ViewGraph& graph, const LouvainOpti
   level_modularity.MarkInitialized();
 
   // Re-seeded on every call: the RNG state left by an earlier call must not leak in.
-  CheckIgraph(igraph_rng_seed(igraph_rng_default(), static_cast<igraph_uint_t>(options.seed)), "igraph_rng_seed");
+  CheckIgraph(igraph_rng_seed(igraph_rng_default(), static_cast<igraph_uint_t>(options.seed)),
+              "igraph_rng_seed");
   CheckIgraph(igraph_community_multilevel(igraph.get(), weights.get(), options.resolution, membership.get(),
                                           levels.get(), level_modularity.get()),
               "igraph_community_multilevel");
@@ -143,8 +144,8 @@ LouvainResult DetectCommunitiesLouvain(const ViewGraph& graph, const LouvainOpti
   LouvainResult result;
   // igraph returns in `membership` the level of highest modularity.
   result.num_levels = static_cast<int>(igraph_matrix_int_nrow(levels.get()));
-  result.modularity = igraph_vector_size(level_modularity.get()) > 0 ? igraph_vector_max(level_modularity.get())
-                                                                      : 0.0;
+  result.modularity =
+      igraph_vector_size(level_modularity.get()) > 0 ? igraph_vector_max(level_modularity.get()) : 0.0;
   std::map<igraph_integer_t, NodeGroup> by_label;
   for (size_t k = 0; k < index.size(); ++k) {
     by_label[VECTOR(*membership.get())[static_cast<igraph_integer_t>(k)]].push_back(index.IdOf(k));

@@ -16,7 +16,8 @@ std::map<IndexT, size_t> CommunityOfNodes(const ViewGraph& graph, const std::vec
         throw std::invalid_argument("ComputeModularity: view " + std::to_string(id) + " is not a node");
       }
       if (!community_of.emplace(id, c).second) {
-        throw std::invalid_argument("ComputeModularity: view " + std::to_string(id) + " is in two communities");
+        throw std::invalid_argument("ComputeModularity: view " + std::to_string(id) +
+                                    " is in two communities");
       }
     }
   }

@@ -7,9 +7,7 @@
 namespace sfm_pruning {
 namespace {
 
-std::string PairText(IndexT a, IndexT b) {
-  return "(" + std::to_string(a) + ", " + std::to_string(b) + ")";
-}
+std::string PairText(IndexT a, IndexT b) { return "(" + std::to_string(a) + ", " + std::to_string(b) + ")"; }
 
 // The same correspondences seen from the other view of the pair.
 std::vector<FeatureMatch> SwappedMatches(const std::vector<FeatureMatch>& matches) {

@@ -14,12 +14,12 @@ namespace sfm_pruning {
 
 // The stage that cut an edge. Values are stable: reports and tests refer to them by name.
 enum class EdgeInvalidReason {
-  kNone,                      // the edge is valid
-  kTooFewInliers,             // value: inlier count
-  kLowInlierRatio,            // value: inliers / putative matches
-  kRotationResidual,          // value: deg between R_ij and the averaged rotations
-  kInterSubgraphInconsistent, // value: deg (or relative translation error) of the RANSAC vote
-  kOther,                     // any other stage; value is stage-defined
+  kNone,                       // the edge is valid
+  kTooFewInliers,              // value: inlier count
+  kLowInlierRatio,             // value: inliers / putative matches
+  kRotationResidual,           // value: deg between R_ij and the averaged rotations
+  kInterSubgraphInconsistent,  // value: deg (or relative translation error) of the RANSAC vote
+  kOther,                      // any other stage; value is stage-defined
 };
 
 // "too_few_inliers", ...: snake_case, as written to reports.
