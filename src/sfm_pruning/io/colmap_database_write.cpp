@@ -184,7 +184,7 @@ void WriteColmapDatabase(const ColmapDatabase& database, const fs::path& path) {
 }
 
 void CopyColmapDatabaseKeepingPairs(const fs::path& input, const fs::path& output, const std::set<ViewPair>& keep) {
-  Connection db = Connection::FromBytes(ReadFileToString(input), input.string());
+  Connection db = Connection::InMemoryCopyOf(input.string());
   colmap_sqlite::RequireColmapTables(db);
   std::vector<int64_t> dropped;
   {

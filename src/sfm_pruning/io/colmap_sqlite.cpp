@@ -1,6 +1,5 @@
 #include "sfm_pruning/io/colmap_sqlite.hpp"
 
-#include <cstring>
 #include <filesystem>
 
 #include "sfm_pruning/util/error.hpp"
@@ -35,18 +34,15 @@ Connection Connection::OpenInMemory(const std::string& source) {
   return Connection(OpenOrThrow(":memory:", SQLITE_OPEN_READWRITE | SQLITE_OPEN_CREATE, source), source);
 }
 
-Connection Connection::FromBytes(const std::string& bytes, const std::string& source) {
-  Connection connection = OpenInMemory(source);
-  // sqlite3_deserialize takes ownership of a buffer from sqlite3_malloc64.
-  auto* buffer = static_cast<unsigned char*>(sqlite3_malloc64(bytes.size()));
-  if (buffer == nullptr && !bytes.empty()) connection.Fail("out of memory");
-  std::memcpy(buffer, bytes.data(), bytes.size());
-  const int rc = sqlite3_deserialize(connection.db_, "main", buffer, static_cast<sqlite3_int64>(bytes.size()),
-                                     static_cast<sqlite3_int64>(bytes.size()),
-                                     SQLITE_DESERIALIZE_FREEONCLOSE | SQLITE_DESERIALIZE_RESIZEABLE);
-  if (rc != SQLITE_OK) connection.Fail("cannot load database");
-  connection.Execute("SELECT count(*) FROM sqlite_master");
-  return connection;
+Connection Connection::InMemoryCopyOf(const std::string& path) {
+  Connection source = OpenReadOnly(path);
+  Connection copy = OpenInMemory(path);
+  sqlite3_backup* backup = sqlite3_backup_init(copy.db_, "main", source.db_, "main");
+  if (backup == nullptr) copy.Fail("cannot copy database");
+  const int rc = sqlite3_backup_step(backup, -1);
+  sqlite3_backup_finish(backup);
+  if (rc != SQLITE_DONE) copy.Fail("cannot copy database");
+  return copy;
 }
 
 Connection::Connection(Connection&& other) noexcept : db_(other.db_), source_(std::move(other.source_)) {
@@ -95,6 +91,10 @@ std::string Connection::Serialize() {
   if (data == nullptr) Fail("cannot serialize database");
   std::string bytes(reinterpret_cast<const char*>(data), static_cast<size_t>(size));
   sqlite3_free(data);
+  // Header bytes 18 and 19 (file format write/read version) are 2 for WAL mode, kept from a WAL
+  // source by the backup. A standalone file must not claim WAL: 1 is rollback-journal mode, which
+  // also lets readers open it read-only in read-only folders.
+  if (bytes.size() >= 20) bytes[18] = bytes[19] = 1;
   return bytes;
 }
 

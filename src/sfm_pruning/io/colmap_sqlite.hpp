@@ -17,8 +17,9 @@ class Connection {
   static Connection OpenReadOnly(const std::string& path);
   // An empty in-memory database; `source` names the eventual file in errors.
   static Connection OpenInMemory(const std::string& source);
-  // An in-memory copy of the database bytes (a whole .db file's content).
-  static Connection FromBytes(const std::string& bytes, const std::string& source);
+  // An in-memory, writable copy of an existing database file (opened read-only, so pending WAL
+  // content is included).
+  static Connection InMemoryCopyOf(const std::string& path);
 
   Connection(Connection&& other) noexcept;
   Connection& operator=(Connection&&) = delete;
@@ -29,7 +30,7 @@ class Connection {
   Statement Prepare(const std::string& sql);
   bool HasTable(const std::string& table);
   bool HasColumn(const std::string& table, const std::string& column);
-  // The whole database as the bytes of a .db file.
+  // The whole database as the bytes of a .db file in rollback-journal mode.
   std::string Serialize();
 
   const std::string& source() const { return source_; }
