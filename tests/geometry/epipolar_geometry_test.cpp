@@ -69,3 +69,23 @@ TEST(EpipolarGeometry, OnlyOneOfTheFourCandidatesPutsPointsInFront) {
 
 }  // namespace
 }  // namespace sfm_pruning
+
+namespace sfm_pruning {
+namespace {
+
+TEST(EpipolarGeometry, DecompositionOfAnEssentialMatrixContainsTheTruth) {
+  const RelativePose truth(Eigen::AngleAxisd(-1.1, Eigen::Vector3d(0.3, 1, -0.2).normalized()).toRotationMatrix(),
+                           Eigen::Vector3d(0.5, -0.2, 0.6).normalized());
+  // Scale and sign of E are arbitrary.
+  const RelativePose decomposed = RelativePoseFromEssential(-3.0 * EssentialMatrix(truth));
+  EXPECT_NEAR(decomposed.rotation.determinant(), 1.0, 1e-12);
+  EXPECT_NEAR(decomposed.translation.norm(), 1.0, 1e-12);
+  int matches = 0;
+  for (const RelativePose& candidate : EssentialPoseCandidates(decomposed)) {
+    matches += candidate.rotation.isApprox(truth.rotation, 1e-12) && candidate.translation.isApprox(truth.translation, 1e-12);
+  }
+  EXPECT_EQ(matches, 1);
+}
+
+}  // namespace
+}  // namespace sfm_pruning

@@ -73,6 +73,22 @@ TEST(OpenGVRelativePose, NoisyWithOutliers) {
   }
 }
 
+TEST(OpenGVRelativePose, MinimalSamplesCopeWithALowInlierRatio) {
+  // 35 % inliers: hopeless for 8-correspondence samples (0.35^8 = 2e-4), routine for 5.
+  testing::SyntheticViewOptions scene_options;
+  scene_options.num_points = 400;
+  scene_options.pixel_noise_std = 0.5;
+  scene_options.outlier_ratio = 0.65;
+  const testing::SyntheticScene scene = testing::MakeSyntheticScene(2, scene_options);
+  const RelativePoseResult result = EstimateRelativePose(scene.bearings[0], scene.bearings[1]);
+  ASSERT_TRUE(result.success) << result.reason;
+  const RelativePose truth = TrueRelativePose(scene);
+  EXPECT_LT(RadToDeg(RotationError(result.relative_pose, truth)), 0.5);
+  EXPECT_LT(RadToDeg(DirectionError(result.relative_pose, truth)), 0.5);
+  EXPECT_GE(InlierRecall(scene, result.inliers), 0.95);
+  EXPECT_LT(result.num_ransac_iterations, 3000);
+}
+
 TEST(OpenGVRelativePose, SameSeedSameOutput) {
   testing::SyntheticViewOptions scene_options;
   scene_options.pixel_noise_std = 1.0;
@@ -90,11 +106,11 @@ TEST(OpenGVRelativePose, SameSeedSameOutput) {
 }
 
 TEST(OpenGVRelativePose, FailsWithAReasonOnBadInput) {
-  const std::vector<Eigen::Vector3d> few(7, Eigen::Vector3d(0, 0, 1));
+  const std::vector<Eigen::Vector3d> few(4, Eigen::Vector3d(0, 0, 1));
   const RelativePoseResult too_few = EstimateRelativePose(few, few);
   EXPECT_FALSE(too_few.success);
   EXPECT_NE(too_few.reason.find("too few correspondences"), std::string::npos) << too_few.reason;
-  const RelativePoseResult mismatched = EstimateRelativePose(few, std::vector<Eigen::Vector3d>(8));
+  const RelativePoseResult mismatched = EstimateRelativePose(few, std::vector<Eigen::Vector3d>(5));
   EXPECT_FALSE(mismatched.success);
   EXPECT_NE(mismatched.reason.find("size"), std::string::npos) << mismatched.reason;
 }

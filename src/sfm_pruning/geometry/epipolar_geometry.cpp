@@ -2,6 +2,8 @@
 
 #include <cmath>
 
+#include <Eigen/SVD>
+
 #include "sfm_pruning/geometry/so3.hpp"
 
 namespace sfm_pruning {
@@ -23,6 +25,21 @@ double AngularEpipolarError(const RelativePose& relative_ij, const Eigen::Vector
   // where every point is consistent with the epipolar constraint.
   if (denominator_sq < 1e-30) return 0.0;
   return std::abs(e) / std::sqrt(denominator_sq);
+}
+
+RelativePose RelativePoseFromEssential(const Eigen::Matrix3d& essential) {
+  // E = U diag(s, s, 0) V^T = [t]_x R with t = U e3 and R = U W V^T, W the quarter turn about z.
+  // E's sign is free, so U and V may be negated to make both proper rotations.
+  const Eigen::JacobiSVD<Eigen::Matrix3d> svd(essential, Eigen::ComputeFullU | Eigen::ComputeFullV);
+  Eigen::Matrix3d U = svd.matrixU();
+  Eigen::Matrix3d V = svd.matrixV();
+  if (U.determinant() < 0.0) U = -U;
+  if (V.determinant() < 0.0) V = -V;
+  Eigen::Matrix3d W;
+  W << 0.0, -1.0, 0.0,  //
+      1.0, 0.0, 0.0,    //
+      0.0, 0.0, 1.0;
+  return RelativePose(U * W * V.transpose(), U.col(2));
 }
 
 std::array<RelativePose, 4> EssentialPoseCandidates(const RelativePose& relative_ij) {

@@ -20,6 +20,11 @@ Eigen::Matrix3d EssentialMatrix(const RelativePose& relative_ij);
 double AngularEpipolarError(const RelativePose& relative_ij, const Eigen::Vector3d& bearing_i,
                             const Eigen::Vector3d& bearing_j);
 
+// One relative pose (|t| = 1) whose essential matrix is `essential` up to scale and sign, by SVD;
+// EssentialPoseCandidates gives the other three. `essential` must have rank 2 (two equal
+// non-zero singular values for an exact essential matrix).
+RelativePose RelativePoseFromEssential(const Eigen::Matrix3d& essential);
+
 // The four relative poses with the essential matrix of `relative_ij` (up to sign), |t| kept:
 // (R, t), (R, -t), (R_pi R, t), (R_pi R, -t) with R_pi the half-turn about t (the "twisted pair").
 // Only one of them puts the observed points in front of both cameras.

@@ -9,6 +9,7 @@
 #include <string>
 
 #include <opengv/relative_pose/CentralRelativeAdapter.hpp>
+#include <opengv/relative_pose/methods.hpp>
 #include <opengv/sac_problems/relative_pose/CentralRelativePoseSacProblem.hpp>
 #include <opengv/sac/Ransac.hpp>
 
@@ -21,6 +22,74 @@ namespace sfm_pruning {
 namespace {
 
 using SacProblem = opengv::sac_problems::relative_pose::CentralRelativePoseSacProblem;
+
+// OpenGV's CentralRelativePoseSacProblem draws 8 correspondences per hypothesis (5 for the
+// solver, 3 to choose among up to 10 essential matrices and their 4 decompositions), so the
+// iterations RANSAC needs grow as 1 / inlier_ratio^8: ~28k at 40 % inliers, hopeless at the 25 %
+// that verification must accept. This subclass draws the minimal 5 and chooses among the
+// essential matrices by their support over all correspondences (Sampson errors, cheap), then
+// among the 4 decompositions by cheirality of the sample. OpenGV's distance function, sampler
+// and Ransac loop are used unchanged.
+class MinimalSampleProblem : public SacProblem {
+ public:
+  MinimalSampleProblem(adapter_t& adapter, algorithm_t algorithm, double max_error_rad)
+      : SacProblem(adapter, algorithm, /*randomSeed=*/false), max_error_rad_(max_error_rad) {}
+
+  int getSampleSize() const override { return 5; }
+
+  bool computeModelCoefficients(const std::vector<int>& sample, model_t& model) const override {
+    // OpenGV's essential matrices satisfy b_i^T E b_j = 0 (viewpoint 1 = i); ours is E^T.
+    std::vector<Eigen::Matrix3d> essentials;
+    if (_algorithm == NISTER) {
+      for (const opengv::essential_t& E : opengv::relative_pose::fivept_nister(_adapter, sample)) {
+        essentials.push_back(E.transpose());
+      }
+    } else {
+      for (const opengv::complexEssential_t& E : opengv::relative_pose::fivept_stewenius(_adapter, sample)) {
+        if (E.imag().norm() <= 1e-8 * E.real().norm()) essentials.push_back(E.real().transpose());
+      }
+    }
+    int best_support = -1;
+    for (const Eigen::Matrix3d& E : essentials) {
+      if (!E.allFinite()) continue;
+      const RelativePose pose = ChooseBySampleCheirality(RelativePoseFromEssential(E), sample);
+      const int support = CountSupport(pose);
+      if (support > best_support) {
+        best_support = support;
+        model = RelativePoseToOpenGV(pose);
+      }
+    }
+    return best_support >= 0;
+  }
+
+ private:
+  RelativePose ChooseBySampleCheirality(const RelativePose& pose, const std::vector<int>& sample) const {
+    RelativePose best = pose;
+    int best_in_front = -1;
+    for (const RelativePose& candidate : EssentialPoseCandidates(pose)) {
+      int in_front = 0;
+      for (const int k : sample) {
+        const auto point = TriangulateTwoView(candidate, _adapter.getBearingVector1(k), _adapter.getBearingVector2(k));
+        in_front += point && point->depth_i > 0.0 && point->depth_j > 0.0;
+      }
+      if (in_front > best_in_front) {
+        best_in_front = in_front;
+        best = candidate;
+      }
+    }
+    return best;
+  }
+
+  int CountSupport(const RelativePose& pose) const {
+    int support = 0;
+    for (const int k : *getIndices()) {
+      support += AngularEpipolarError(pose, _adapter.getBearingVector1(k), _adapter.getBearingVector2(k)) <= max_error_rad_;
+    }
+    return support;
+  }
+
+  double max_error_rad_;
+};
 
 struct InlierSet {
   std::vector<int> inliers;
@@ -80,8 +149,9 @@ RelativePoseResult EstimateRelativePose(const std::vector<Eigen::Vector3d>& bear
   opengv::relative_pose::CentralRelativeAdapter adapter(opengv_i, opengv_j);
   const auto algorithm = options.solver == RelativePoseOptions::Solver::kNister ? SacProblem::NISTER
                                                                                 : SacProblem::STEWENIUS;
+  const double max_error_rad = DegToRad(options.max_angular_error_deg);
   // make_shared, never new: see docs/dependencies.md §0 (aligned operator delete in libopengv).
-  const auto problem = std::make_shared<SacProblem>(adapter, algorithm, /*randomSeed=*/false);
+  const auto problem = std::make_shared<MinimalSampleProblem>(adapter, algorithm, max_error_rad);
   // Checked here because OpenGV prints to stderr instead of failing when the sample is too big.
   if (bearings_i.size() < static_cast<size_t>(problem->getSampleSize())) {
     return Failure("too few correspondences: " + std::to_string(bearings_i.size()) + " < " +
@@ -89,7 +159,6 @@ RelativePoseResult EstimateRelativePose(const std::vector<Eigen::Vector3d>& bear
   }
   SeedOpenGVSampler(options.seed, problem.get());
 
-  const double max_error_rad = DegToRad(options.max_angular_error_deg);
   opengv::sac::Ransac<SacProblem> ransac;
   ransac.sac_model_ = problem;
   ransac.threshold_ = OpenGVThresholdFromAngle(max_error_rad);
