@@ -1,0 +1,71 @@
+// The geometry of a synthetic scene before any camera looks at it: textured surface points and
+// camera poses. Each scene file (synthetic_*_scene.cpp) builds one SceneLayout.
+#pragma once
+
+#include <cstdint>
+#include <random>
+#include <vector>
+
+#include <Eigen/Core>
+
+#include "sfm_pruning/eval/synthetic_scene.hpp"
+#include "sfm_pruning/sfm/pose.hpp"
+#include "sfm_pruning/sfm/types.hpp"
+
+namespace sfm_pruning {
+
+// A point on a surface. Points with one appearance id look identical (twins).
+struct SurfacePoint {
+  Eigen::Vector3d X = Eigen::Vector3d::Zero();
+  Eigen::Vector3d normal = Eigen::Vector3d::UnitZ();  // unit, pointing to the side it is seen from
+  IndexT appearance = 0;
+};
+
+// How the image pairs to match are chosen.
+enum class PairSelection {
+  kExhaustive,             // every pair (small scenes)
+  kSequentialAndRetrieval  // a sliding window plus retrieval-style loop candidates
+};
+
+struct SceneLayout {
+  std::vector<Pose> poses;  // view i has pose i
+  std::vector<SurfacePoint> points;  // landmark id = index
+  IndexT num_appearances = 0;
+  PairSelection pairs = PairSelection::kExhaustive;
+};
+
+// A texture: points on a plane patch, in patch coordinates (u, v along the patch, w = relief
+// along its normal), each with an appearance id. Placing one texture on several patches creates
+// twins with identical relative geometry, so cross-copy matches are consistent with one
+// (wrong) rigid motion.
+struct Texture {
+  std::vector<Eigen::Vector3d> uvw;
+  std::vector<IndexT> appearance;
+};
+
+// Uniform random points on a width x height patch (metres) with `density_per_m2` points per
+// square metre and relief uniform in [-relief_m, relief_m]. New appearance ids are taken from
+// layout->num_appearances.
+Texture MakeTexture(double width_m, double height_m, double density_per_m2, double relief_m,
+                    SceneLayout* layout, std::mt19937_64& rng);
+
+// Adds the texture's points at origin + u * u_axis + v * v_axis + w * normal, where
+// normal = u_axis x v_axis (unit axes, orthogonal). Choose the axes so that the normal points
+// towards the cameras that should see the surface.
+void PlaceTexture(const Texture& texture, const Eigen::Vector3d& origin, const Eigen::Vector3d& u_axis,
+                  const Eigen::Vector3d& v_axis, SceneLayout* layout);
+
+// A camera at `center` looking at `target`, with image +y pointing down along world -z (z up).
+Pose LookAtPose(const Eigen::Vector3d& center, const Eigen::Vector3d& target);
+
+// A camera at `center` with the given heading (radians, counter-clockwise from world +x in the
+// ground plane) and pitch (radians, positive looks up).
+Pose HeadingPitchPose(const Eigen::Vector3d& center, double heading, double pitch);
+
+// Scene builders. `options` carries resolved defaults (num_views etc.); `rng` is the layout stream.
+SceneLayout BuildOrbitLayout(const SyntheticSceneOptions& options, bool symmetric, std::mt19937_64& rng);
+SceneLayout BuildStreetLayout(const SyntheticSceneOptions& options, std::mt19937_64& rng);
+SceneLayout BuildCourtyardLayout(const SyntheticSceneOptions& options, std::mt19937_64& rng);
+SceneLayout BuildLoopLayout(const SyntheticSceneOptions& options, std::mt19937_64& rng);
+
+}  // namespace sfm_pruning

@@ -1,0 +1,207 @@
+#include "sfm_pruning/eval/synthetic_scene.hpp"
+
+#include <algorithm>
+#include <cstdio>
+#include <functional>
+#include <thread>
+#include <utility>
+
+#include "sfm_pruning/eval/synthetic_layout.hpp"
+#include "sfm_pruning/eval/synthetic_matching.hpp"
+#include "sfm_pruning/eval/synthetic_observations.hpp"
+#include "sfm_pruning/eval/synthetic_pairs.hpp"
+#include "sfm_pruning/eval/synthetic_random.hpp"
+#include "sfm_pruning/util/error.hpp"
+
+namespace sfm_pruning {
+namespace {
+
+constexpr char kOrbitSymmetric[] = "orbit_symmetric";
+constexpr char kStreet[] = "street";
+constexpr char kCourtyard[] = "courtyard";
+constexpr char kClean[] = "clean";
+constexpr char kSequentialLarge[] = "sequential_large";
+
+// Pairs matched between two progress reports (and per batch of worker threads).
+constexpr size_t kPairsPerBatch = 256;
+
+bool IsLarge(const std::string& scene) { return scene == kSequentialLarge; }
+
+void Require(bool condition, const std::string& problem) {
+  if (!condition) throw Error("synthetic scene: " + problem);
+}
+
+SyntheticSceneOptions ResolveDefaults(SyntheticSceneOptions o) {
+  const std::vector<std::string> names = SyntheticSceneNames();
+  if (std::find(names.begin(), names.end(), o.scene) == names.end()) {
+    std::string list;
+    for (const std::string& name : names) list += (list.empty() ? "" : ", ") + name;
+    throw Error("synthetic scene: unknown scene '" + o.scene + "' (expected one of: " + list + ")");
+  }
+  const bool large = IsLarge(o.scene);
+  if (o.num_views == 0) {
+    if (large) o.num_views = 2000;
+    else if (o.scene == kStreet) o.num_views = 40;
+    else if (o.scene == kCourtyard) o.num_views = 48;
+    else o.num_views = 36;
+  }
+  if (o.image_width == 0) o.image_width = large ? 640 : 1024;
+  if (o.image_height == 0) o.image_height = large ? 480 : 768;
+  if (o.focal_px == 0.0) o.focal_px = 1.2 * std::max(o.image_width, o.image_height);
+  if (o.max_distance_m == 0.0) o.max_distance_m = large ? 25.0 : 40.0;
+  if (o.sequential_window == 0) o.sequential_window = 5;
+  if (o.loop_candidates == 0) o.loop_candidates = 3;
+  if (o.laps == 0) o.laps = 2;
+  if (o.twin_fraction < 0.0) o.twin_fraction = 0.25;
+  if (o.num_threads == 0) o.num_threads = 1;
+
+  Require(o.num_views >= 2, "num_views must be at least 2");
+  Require(!large || o.num_views >= 4 * o.laps, "sequential_large needs at least 4 views per lap");
+  Require(o.focal_px > 0.0, "focal_px must be positive");
+  Require(o.noise_px >= 0.0, "noise_px must be >= 0");
+  Require(o.descriptor_noise >= 0.0, "descriptor_noise must be >= 0");
+  Require(o.dropout >= 0.0 && o.dropout < 1.0, "dropout must be in [0, 1)");
+  Require(o.clutter_ratio >= 0.0, "clutter_ratio must be >= 0");
+  Require(o.max_incidence_deg > 0.0, "max_incidence_deg must be positive");
+  Require(o.max_distance_m > 0.0, "max_distance_m must be positive");
+  Require(o.point_density_scale > 0.0, "point_density_scale must be positive");
+  Require(o.ratio_test > 0.0 && o.ratio_test <= 1.0, "ratio_test must be in (0, 1]");
+  Require(o.outlier_ratio >= 0.0 && o.outlier_ratio < 1.0, "outlier_ratio must be in [0, 1)");
+  Require(o.min_matches >= 0, "min_matches must be >= 0");
+  Require(o.sequential_window > 0 && o.loop_candidates >= 0, "sequential_window must be positive, loop_candidates >= 0");
+  Require(o.laps >= 1, "laps must be at least 1");
+  Require(o.twin_fraction <= 0.9, "twin_fraction must be in [0, 0.9]");
+  Require(o.num_threads >= 1, "num_threads must be at least 1");
+  return o;
+}
+
+SceneLayout BuildLayout(const SyntheticSceneOptions& options) {
+  std::mt19937_64 rng = MakeSyntheticRng(options.seed, SyntheticStream::kLayout);
+  if (options.scene == kOrbitSymmetric) return BuildOrbitLayout(options, /*symmetric=*/true, rng);
+  if (options.scene == kClean) return BuildOrbitLayout(options, /*symmetric=*/false, rng);
+  if (options.scene == kStreet) return BuildStreetLayout(options, rng);
+  if (options.scene == kCourtyard) return BuildCourtyardLayout(options, rng);
+  return BuildLoopLayout(options, rng);
+}
+
+SfmData MakeGroundTruth(const SceneLayout& layout, const CameraIntrinsics& intrinsics,
+                        std::map<IndexT, Landmark> landmarks) {
+  SfmData data;
+  data.intrinsics[0] = intrinsics;
+  for (size_t v = 0; v < layout.poses.size(); ++v) {
+    const auto id = static_cast<IndexT>(v);
+    View view;
+    view.id_view = id;
+    view.id_intrinsic = 0;
+    view.id_pose = id;
+    char name[32];
+    std::snprintf(name, sizeof(name), "view_%05u.jpg", id);
+    view.filename = name;
+    view.width = intrinsics.width();
+    view.height = intrinsics.height();
+    data.views[id] = view;
+    data.poses[id] = layout.poses[v];
+  }
+  // Only points seen twice could ever be triangulated.
+  for (auto& [id, landmark] : landmarks) {
+    if (landmark.observations.size() >= 2) data.structure.emplace(id, std::move(landmark));
+  }
+  return data;
+}
+
+std::vector<ViewPair> SelectPairs(const SyntheticScene& scene, const SceneLayout& layout) {
+  const auto num_views = static_cast<IndexT>(layout.poses.size());
+  if (layout.pairs == PairSelection::kExhaustive) return ExhaustivePairs(num_views);
+  std::vector<std::vector<IndexT>> view_appearances(num_views);
+  for (const auto& [view_id, landmarks] : scene.feature_landmarks) {
+    for (IndexT landmark : landmarks) {
+      if (landmark != kUndefinedIndex) view_appearances[view_id].push_back(layout.points[landmark].appearance);
+    }
+  }
+  const SyntheticSceneOptions& o = scene.options;
+  return SequentialAndRetrievalPairs(view_appearances, layout.num_appearances, o.sequential_window,
+                                     o.loop_candidates, o.min_matches);
+}
+
+struct PairResult {
+  std::vector<FeatureMatch> matches;
+  PairMatchStats stats;
+  bool kept = false;
+};
+
+PairResult MatchPair(const SyntheticScene& scene, const ViewPair& pair) {
+  const SyntheticSceneOptions& o = scene.options;
+  const FeatureSet& a = scene.features.at(pair.first);
+  const FeatureSet& b = scene.features.at(pair.second);
+  PairResult result;
+  result.matches = MatchDescriptorsBruteForce(a, b, o.ratio_test, o.mutual_check);
+  if (result.matches.size() < static_cast<size_t>(std::max(1, o.min_matches))) return result;
+  const MatchTruth truth{&scene.feature_landmarks.at(pair.first), &scene.feature_landmarks.at(pair.second),
+                         &scene.landmark_appearance};
+  const PairMatchStats found = ClassifyMatches(result.matches, truth);
+  std::mt19937_64 rng = MakeSyntheticRng(o.seed, SyntheticStream::kPair, pair.first, pair.second);
+  const size_t injected = InjectRandomWrongMatches(found, o.outlier_ratio, a.size(), b.size(), truth, rng, &result.matches);
+  result.stats = found;
+  result.stats.num_random += injected;
+  result.stats.num_injected = injected;
+  result.kept = true;
+  return result;
+}
+
+// Matches every pair; pairs are independent, so worker threads change nothing in the output.
+void MatchAllPairs(const std::vector<ViewPair>& pairs, SyntheticScene* scene, const ProgressCallback& progress) {
+  const auto num_threads = static_cast<size_t>(scene->options.num_threads);
+  for (size_t begin = 0; begin < pairs.size(); begin += kPairsPerBatch) {
+    const size_t end = std::min(pairs.size(), begin + kPairsPerBatch);
+    std::vector<PairResult> results(end - begin);
+    auto work = [&](size_t first) {
+      for (size_t k = begin + first; k < end; k += num_threads) results[k - begin] = MatchPair(*scene, pairs[k]);
+    };
+    std::vector<std::thread> workers;
+    for (size_t t = 1; t < num_threads; ++t) workers.emplace_back(work, t);
+    work(0);
+    for (std::thread& worker : workers) worker.join();
+    for (size_t k = begin; k < end; ++k) {
+      PairResult& result = results[k - begin];
+      if (!result.kept) continue;
+      scene->putative_matches[pairs[k]] = std::move(result.matches);
+      scene->pair_stats[pairs[k]] = result.stats;
+    }
+    ReportProgress(progress, "synth: match pairs", end, pairs.size());
+  }
+}
+
+}  // namespace
+
+std::vector<std::string> SyntheticSceneNames() {
+  return {kOrbitSymmetric, kStreet, kCourtyard, kClean, kSequentialLarge};
+}
+
+SyntheticScene GenerateSyntheticScene(const SyntheticSceneOptions& options, const ProgressCallback& progress) {
+  SyntheticScene scene;
+  scene.options = ResolveDefaults(options);
+  scene.name = scene.options.scene;
+  const SyntheticSceneOptions& o = scene.options;
+
+  const SceneLayout layout = BuildLayout(o);
+  const CameraIntrinsics intrinsics = CameraIntrinsics::Undistorted(
+      CameraModel::kPinholeRadialK3, o.image_width, o.image_height, o.focal_px, 0.5 * o.image_width, 0.5 * o.image_height);
+  const AppearanceTable appearances = MakeAppearanceTable(layout.num_appearances, o.seed);
+  RenderedViews rendered = RenderViews(layout, intrinsics, appearances, o, progress);
+
+  std::vector<size_t> copies(layout.num_appearances, 0);
+  for (const SurfacePoint& point : layout.points) ++copies[point.appearance];
+  for (size_t id = 0; id < layout.points.size(); ++id) {
+    const IndexT appearance = layout.points[id].appearance;
+    scene.landmark_appearance[static_cast<IndexT>(id)] = appearance;
+    if (copies[appearance] > 1) scene.twin_landmarks.insert(static_cast<IndexT>(id));
+  }
+  scene.features = std::move(rendered.features);
+  scene.feature_landmarks = std::move(rendered.feature_landmarks);
+  scene.ground_truth = MakeGroundTruth(layout, intrinsics, std::move(rendered.landmarks));
+
+  MatchAllPairs(SelectPairs(scene, layout), &scene, progress);
+  return scene;
+}
+
+}  // namespace sfm_pruning

@@ -1,0 +1,52 @@
+#include "sfm_pruning/io/model_io.hpp"
+
+#include <system_error>
+
+#include "sfm_pruning/io/ground_truth_cameras.hpp"
+#include "sfm_pruning/util/error.hpp"
+
+namespace sfm_pruning {
+namespace fs = std::filesystem;
+
+std::string ModelFormatName(ModelFormat format) {
+  switch (format) {
+    case ModelFormat::kColmapModel:
+      return "COLMAP model";
+    case ModelFormat::kSfmData:
+      return "sfm_data";
+    case ModelFormat::kGroundTruthCameras:
+      return "gt_cameras.txt";
+  }
+  return "unknown";
+}
+
+ModelFormat DetectModelFormat(const fs::path& path) {
+  std::error_code error;
+  const fs::file_status status = fs::status(path, error);
+  if (error || !fs::exists(status)) throw FileError(path.string(), "no such file or directory");
+  if (fs::is_directory(status)) {
+    if (fs::exists(path / "cameras.bin") || fs::exists(path / "cameras.txt")) return ModelFormat::kColmapModel;
+    throw FileError(path.string(), "directory is not a COLMAP model (no cameras.bin or cameras.txt)");
+  }
+  const std::string extension = path.extension().string();
+  if (extension == ".json" || extension == ".bin") return ModelFormat::kSfmData;
+  if (extension == ".txt") return ModelFormat::kGroundTruthCameras;
+  throw FileError(path.string(),
+                  "unknown model format (expected a COLMAP model folder, sfm_data.json/.bin or gt_cameras.txt)");
+}
+
+SfmData ReadModel(const fs::path& path) {
+  const ModelFormat format = DetectModelFormat(path);
+  switch (format) {
+    case ModelFormat::kGroundTruthCameras:
+      return ReadGroundTruthCameras(path);
+    case ModelFormat::kColmapModel:
+      // TODO(io): dispatch to ReadColmapModel(path) (io/colmap_model.hpp) once it has landed.
+    case ModelFormat::kSfmData:
+      // TODO(io): dispatch to ReadSfmData(path) (io/openmvg_sfm_data.hpp) once it has landed.
+      break;
+  }
+  throw FileError(path.string(), ModelFormatName(format) + " format not supported yet");
+}
+
+}  // namespace sfm_pruning
