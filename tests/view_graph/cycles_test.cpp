@@ -2,6 +2,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <set>
 #include <stdexcept>
 
@@ -12,10 +13,23 @@ namespace {
 
 using testing::AddWeightedEdge;
 
+// The loop first -> first + 1 -> ... -> first + num_nodes - 1 -> first.
+void AddRing(ViewGraph* graph, IndexT first, IndexT num_nodes) {
+  for (IndexT k = 0; k < num_nodes; ++k) AddWeightedEdge(graph, first + k, first + (k + 1) % num_nodes, 1);
+}
+
 ViewGraph Ring(IndexT num_nodes) {
   ViewGraph graph;
-  for (IndexT k = 0; k < num_nodes; ++k) AddWeightedEdge(&graph, k, (k + 1) % num_nodes, 1);
+  AddRing(&graph, 0, num_nodes);
   return graph;
+}
+
+// True when the loop walks the edge {a, b} (in either direction).
+bool LoopUsesEdge(const ViewCycle& cycle, IndexT a, IndexT b) {
+  for (size_t k = 0; k < cycle.size(); ++k) {
+    if (MakeViewPair(cycle[k], cycle[(k + 1) % cycle.size()]) == MakeViewPair(a, b)) return true;
+  }
+  return false;
 }
 
 // Every loop is a closed walk of distinct views over valid edges, in canonical form.
@@ -100,6 +114,26 @@ TEST(Cycles, CapIsRespected) {
   EXPECT_TRUE(std::equal(capped.cycles.begin(), capped.cycles.end(), full.cycles.begin()));
 }
 
+TEST(Cycles, EveryEdgeOnAShortLoopIsTestedBeforeTrianglesFillTheCap) {
+  // K8 on 0..7 (28 edges, 56 triangles) and a 5-ring on 10..14: 33 edges, cap 40 < 56.
+  ViewGraph graph;
+  testing::AddClique(&graph, {0, 1, 2, 3, 4, 5, 6, 7}, 1);
+  AddRing(&graph, 10, 5);
+  CycleSearchOptions options;
+  options.max_num_cycles = 40;
+  const CycleSearchResult result = FindBoundedCycles(graph, options);
+  EXPECT_EQ(result.cycles.size(), 40u);
+  EXPECT_TRUE(result.truncated);
+  EXPECT_EQ(result.num_triangles, 39u);
+  EXPECT_NE(std::find(result.cycles.begin(), result.cycles.end(), ViewCycle{10, 11, 12, 13, 14}),
+            result.cycles.end());
+  for (const ViewPair& pair : graph.ValidEdgePairs()) {
+    bool covered = false;
+    for (const ViewCycle& cycle : result.cycles) covered |= LoopUsesEdge(cycle, pair.first, pair.second);
+    EXPECT_TRUE(covered) << pair.first << "-" << pair.second;
+  }
+}
+
 TEST(LoopRotationError, ZeroForConsistentRelativePoses) {
   const std::map<IndexT, Pose> poses = testing::RandomPoses(8, 21);
   ViewGraph graph;
@@ -108,14 +142,6 @@ TEST(LoopRotationError, ZeroForConsistentRelativePoses) {
   ASSERT_EQ(result.num_triangles, 56u);  // C(8, 3)
   for (const ViewCycle& cycle : result.cycles) EXPECT_LT(LoopRotationErrorDeg(graph, cycle), 1e-5);
   EXPECT_LT(LoopRotationErrorDeg(graph, {7, 2, 5, 0, 3, 1, 6}), 1e-5);
-}
-
-// True when the loop walks the edge {a, b} (in either direction).
-bool LoopUsesEdge(const ViewCycle& cycle, IndexT a, IndexT b) {
-  for (size_t k = 0; k < cycle.size(); ++k) {
-    if (MakeViewPair(cycle[k], cycle[(k + 1) % cycle.size()]) == MakeViewPair(a, b)) return true;
-  }
-  return false;
 }
 
 TEST(LoopRotationError, EqualsAPlantedEdgeError) {

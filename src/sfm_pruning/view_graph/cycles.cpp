@@ -26,12 +26,14 @@ class CycleCollector {
 
   // Returns false once the cap is reached: the caller stops searching.
   bool Add(const ViewCycle& cycle) {
+    ViewCycle canonical = Canonical(cycle);
+    if (seen_.count(canonical) > 0) return true;  // a duplicate does not hit the cap
     if (result_.cycles.size() >= max_num_cycles_) {
       result_.truncated = true;
       return false;
     }
-    ViewCycle canonical = Canonical(cycle);
-    if (seen_.insert(canonical).second) result_.cycles.push_back(std::move(canonical));
+    seen_.insert(canonical);
+    result_.cycles.push_back(std::move(canonical));
     return true;
   }
   bool Full() const { return result_.truncated; }
@@ -54,7 +56,7 @@ DenseAdjacency BuildDenseAdjacency(const ViewGraph& graph, const DenseNodeIndex&
   return adjacency;
 }
 
-// Step 1: each triangle a < b < c once, from its edge (a, b).
+// Step 2: each triangle a < b < c once, from its edge (a, b).
 void CollectTriangles(const DenseAdjacency& adjacency, const DenseNodeIndex& index,
                       CycleCollector* collector) {
   for (size_t a = 0; a < adjacency.size(); ++a) {
@@ -72,7 +74,6 @@ void CollectTriangles(const DenseAdjacency& adjacency, const DenseNodeIndex& ind
           ++it_b;
         } else {
           if (!collector->Add({index.IdOf(a), index.IdOf(b), index.IdOf(*it_a)})) return;
-          ++collector->result().num_triangles;
           ++it_a;
           ++it_b;
         }
@@ -128,7 +129,7 @@ class BoundedBfs {
   std::vector<size_t> touched_;
 };
 
-// Step 2: per edge, the shortest loop through it.
+// Step 1: per edge, the shortest loop through it.
 void CollectShortestAlternatives(const DenseAdjacency& adjacency, const DenseNodeIndex& index,
                                  size_t max_cycle_length, CycleCollector* collector) {
   BoundedBfs bfs(adjacency.size());
@@ -151,11 +152,14 @@ CycleSearchResult FindBoundedCycles(const ViewGraph& graph, const CycleSearchOpt
   if (options.max_cycle_length < 3) return collector.result();  // no simple cycle is shorter
   const DenseNodeIndex index(graph);
   const DenseAdjacency adjacency = BuildDenseAdjacency(graph, index);
-  if (options.include_triangles) CollectTriangles(adjacency, index, &collector);
-  if (options.include_shortest_alternatives && !collector.Full()) {
+  if (options.include_shortest_alternatives) {
     CollectShortestAlternatives(adjacency, index, options.max_cycle_length, &collector);
   }
-  return collector.result();
+  if (options.include_triangles && !collector.Full()) CollectTriangles(adjacency, index, &collector);
+  CycleSearchResult& result = collector.result();
+  result.num_triangles = static_cast<size_t>(std::count_if(
+      result.cycles.begin(), result.cycles.end(), [](const ViewCycle& cycle) { return cycle.size() == 3; }));
+  return result;
 }
 
 double LoopRotationErrorDeg(const ViewGraph& graph, const ViewCycle& cycle) {

@@ -2,16 +2,18 @@
 // of fewer than 8 cameras must compose to nearly the identity rotation).
 //
 // Enumerating every simple cycle explodes on dense graphs, so the search is:
-//   1. every triangle, exactly: for each valid edge (a, b), a < b, each common neighbour c > b.
-//      Cost O(E * d_max) (sorted adjacency intersection), d_max the largest degree.
-//   2. for every valid edge (a, b), in ViewPair order, the shortest path from a to b that does
+//   1. for every valid edge (a, b), in ViewPair order, the shortest path from a to b that does
 //      not use the edge itself (BFS from a, neighbours in increasing id, stopped at depth
-//      max_cycle_length - 1). With the edge it closes a cycle of at most max_cycle_length
-//      cameras: the tightest loop that tests that edge. Cost O(E * (V + E)) in the worst case,
-//      far less in practice because the BFS stops at the depth bound.
-// Every edge that lies on some cycle of <= max_cycle_length cameras is thus covered by at least
-// one cycle; not every such cycle is listed. Duplicates (e.g. a triangle found again in step 2)
-// are removed through a canonical form. Enumeration stops once max_num_cycles are found.
+//      max_cycle_length - 1). With the edge it closes the tightest loop of at most
+//      max_cycle_length cameras through that edge. At most E loops; cost O(E * (V + E)) in the
+//      worst case, far less in practice because each BFS stops at the target or the depth bound.
+//   2. every triangle, exactly: for each valid edge (a, b), a < b, each common neighbour c > b.
+//      Cost O(E * d_max) (sorted adjacency intersection), d_max the largest degree.
+// Step 1 comes first because it is what guarantees coverage: every edge that lies on some loop
+// of <= max_cycle_length cameras is tested by at least one loop, even when triangles (which can
+// number O(E * d_max) on dense graphs) would fill the cap. Not every such loop is listed.
+// Duplicates (a triangle found again in step 2) are removed through a canonical form.
+// Enumeration stops once max_num_cycles loops are listed.
 #pragma once
 
 #include <cstddef>
@@ -29,18 +31,18 @@ using ViewCycle = std::vector<IndexT>;
 struct CycleSearchOptions {
   // Longest loop, in cameras (= edges). The paper tests loops of fewer than 8 cameras.
   size_t max_cycle_length = 7;
-  // Stop after this many cycles (triangles first); CycleSearchResult::truncated tells.
+  // Stop after this many cycles (per-edge shortest loops first); CycleSearchResult::truncated.
   size_t max_num_cycles = 100000;
-  bool include_triangles = true;              // step 1
-  bool include_shortest_alternatives = true;  // step 2
+  bool include_shortest_alternatives = true;  // step 1
+  bool include_triangles = true;              // step 2
 };
 
 struct CycleSearchResult {
-  // Canonical cycles in discovery order: triangles in ViewPair order of their first edge, then
-  // the step-2 cycles in the order of the edge that produced them.
+  // Canonical cycles in discovery order: the step-1 loops in the order of the edge that produced
+  // them, then the triangles not yet listed, in ViewPair order of their first edge.
   std::vector<ViewCycle> cycles;
-  size_t num_triangles = 0;
-  bool truncated = false;  // true when max_num_cycles stopped the search
+  size_t num_triangles = 0;  // loops of 3 views in `cycles`, whichever step found them
+  bool truncated = false;    // true when max_num_cycles stopped the search
 };
 
 CycleSearchResult FindBoundedCycles(const ViewGraph& graph, const CycleSearchOptions& options = {});
