@@ -46,10 +46,11 @@ TEST(SyntheticScene, SameSeedGivesIdenticalScene) {
 }
 
 TEST(SyntheticScene, ThreadsDoNotChangeTheMatches) {
-  SyntheticSceneOptions options = SmallOptions("courtyard");
+  SyntheticSceneOptions options = SmallOptions("street");
   const SyntheticScene one = GenerateSyntheticScene(options);
   options.num_threads = 2;
   const SyntheticScene two = GenerateSyntheticScene(options);
+  EXPECT_FALSE(one.putative_matches.empty());
   EXPECT_EQ(one.putative_matches, two.putative_matches);
 }
 
@@ -64,7 +65,7 @@ TEST(SyntheticScene, DifferentSeedGivesDifferentScene) {
 // the requested standard deviation.
 TEST(SyntheticScene, ObservationsReprojectWithinNoise) {
   for (const double sigma : {0.0, 1.0, 2.5}) {
-    SyntheticSceneOptions options = SmallOptions("courtyard");
+    SyntheticSceneOptions options = SmallOptions("orbit_symmetric");
     options.noise_px = sigma;
     const SyntheticScene scene = GenerateSyntheticScene(options);
     const SfmData& gt = scene.ground_truth;
