@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 
 #include <stdexcept>
+#include <thread>
 
 #include "sfm_pruning/view_graph/modularity.hpp"
 #include "view_graph/graph_builders.hpp"
@@ -73,6 +74,27 @@ TEST(Louvain, SameSeedSameCommunities) {
   EXPECT_EQ(first.communities, second.communities);
   EXPECT_EQ(first.modularity, second.modularity);
   EXPECT_EQ(first.num_levels, second.num_levels);
+}
+
+TEST(Louvain, ConcurrentCallsGiveTheSequentialResults) {
+  // igraph's RNG is process-wide: the mutex + re-seed must keep parallel callers independent.
+  const ViewGraph graph = testing::RandomGraph(60, 0.1, 9);
+  std::vector<LouvainResult> sequential;
+  for (uint64_t seed = 0; seed < 4; ++seed)
+    sequential.push_back(DetectCommunitiesLouvain(graph, {1.0, seed}));
+  std::vector<LouvainResult> parallel(4);
+  std::vector<std::thread> threads;
+  for (uint64_t seed = 0; seed < 4; ++seed) {
+    threads.emplace_back([&, seed] {
+      for (int repeat = 0; repeat < 5; ++repeat)
+        parallel[seed] = DetectCommunitiesLouvain(graph, {1.0, seed});
+    });
+  }
+  for (std::thread& thread : threads) thread.join();
+  for (size_t k = 0; k < 4; ++k) {
+    EXPECT_EQ(parallel[k].communities, sequential[k].communities);
+    EXPECT_EQ(parallel[k].modularity, sequential[k].modularity);
+  }
 }
 
 TEST(Louvain, DegenerateGraphs) {
