@@ -39,9 +39,8 @@ TEST(OpenGVRelativePose, NoiseFreeRecoversThePoseInOurConvention) {
   // The convention test: the truth comes from pose.hpp's RelativePoseBetween, normalised.
   for (const auto solver : {RelativePoseOptions::Solver::kStewenius, RelativePoseOptions::Solver::kNister}) {
     for (uint32_t seed = 1; seed <= 5; ++seed) {
-      testing::SyntheticViewOptions scene_options;
-      scene_options.seed = seed;
-      const testing::SyntheticScene scene = testing::MakeSyntheticScene(2, scene_options);
+      // {points, pixel noise, outlier ratio, distortion, seed}
+      const testing::SyntheticScene scene = testing::MakeSyntheticScene(2, {200, 0.0, 0.0, true, seed});
       RelativePoseOptions options;
       options.solver = solver;
       const RelativePoseResult result = EstimateRelativePose(scene.bearings[0], scene.bearings[1], options);
@@ -58,11 +57,8 @@ TEST(OpenGVRelativePose, NoiseFreeRecoversThePoseInOurConvention) {
 
 TEST(OpenGVRelativePose, NoisyWithOutliers) {
   for (uint32_t seed = 1; seed <= 5; ++seed) {
-    testing::SyntheticViewOptions scene_options;
-    scene_options.seed = seed;
-    scene_options.pixel_noise_std = 0.5;
-    scene_options.outlier_ratio = 0.25;
-    const testing::SyntheticScene scene = testing::MakeSyntheticScene(2, scene_options);
+    // {points, pixel noise, outlier ratio, distortion, seed}
+    const testing::SyntheticScene scene = testing::MakeSyntheticScene(2, {200, 0.5, 0.25, true, seed});
     const RelativePoseResult result = EstimateRelativePose(scene.bearings[0], scene.bearings[1]);
     ASSERT_TRUE(result.success) << result.reason;
     const RelativePose truth = TrueRelativePose(scene);
@@ -75,11 +71,8 @@ TEST(OpenGVRelativePose, NoisyWithOutliers) {
 
 TEST(OpenGVRelativePose, MinimalSamplesCopeWithALowInlierRatio) {
   // 35 % inliers: hopeless for 8-correspondence samples (0.35^8 = 2e-4), routine for 5.
-  testing::SyntheticViewOptions scene_options;
-  scene_options.num_points = 400;
-  scene_options.pixel_noise_std = 0.5;
-  scene_options.outlier_ratio = 0.65;
-  const testing::SyntheticScene scene = testing::MakeSyntheticScene(2, scene_options);
+  // {points, pixel noise, outlier ratio, distortion, seed}
+  const testing::SyntheticScene scene = testing::MakeSyntheticScene(2, {400, 0.5, 0.65, true, 1});
   const RelativePoseResult result = EstimateRelativePose(scene.bearings[0], scene.bearings[1]);
   ASSERT_TRUE(result.success) << result.reason;
   const RelativePose truth = TrueRelativePose(scene);
@@ -90,12 +83,10 @@ TEST(OpenGVRelativePose, MinimalSamplesCopeWithALowInlierRatio) {
 }
 
 TEST(OpenGVRelativePose, SameSeedSameOutput) {
-  testing::SyntheticViewOptions scene_options;
-  scene_options.pixel_noise_std = 1.0;
-  scene_options.outlier_ratio = 0.4;
-  const testing::SyntheticScene scene = testing::MakeSyntheticScene(2, scene_options);
+  // {points, pixel noise, outlier ratio, distortion, seed}
+  const testing::SyntheticScene scene = testing::MakeSyntheticScene(2, {200, 1.0, 0.4, true, 1});
   RelativePoseOptions options;
-  options.seed = 42;
+  options.ransac.seed = 42;
   const RelativePoseResult a = EstimateRelativePose(scene.bearings[0], scene.bearings[1], options);
   const RelativePoseResult b = EstimateRelativePose(scene.bearings[0], scene.bearings[1], options);
   ASSERT_TRUE(a.success);

@@ -42,11 +42,8 @@ TwoViewInput MakeInput(const testing::SyntheticScene& scene, uint32_t seed) {
 }
 
 TEST(TwoViewGeometry, VerifiesAGoodPair) {
-  testing::SyntheticViewOptions scene_options;
-  scene_options.num_points = 300;
-  scene_options.pixel_noise_std = 0.5;
-  scene_options.outlier_ratio = 0.25;
-  const testing::SyntheticScene scene = testing::MakeSyntheticScene(2, scene_options);
+  // {points, pixel noise, outlier ratio, distortion, seed}
+  const testing::SyntheticScene scene = testing::MakeSyntheticScene(2, {300, 0.5, 0.25, true, 1});
   const TwoViewInput input = MakeInput(scene, 5);
   const TwoViewGeometry geometry = EstimateTwoViewGeometry(input.features_i, scene.intrinsics[0], input.features_j,
                                                            scene.intrinsics[1], input.matches);
@@ -75,9 +72,8 @@ TEST(TwoViewGeometry, VerifiesAGoodPair) {
 
 TEST(TwoViewGeometry, RejectsRandomMatchesWithAReason) {
   // Features of two unrelated views: uniformly random pixels, matched one to one.
-  testing::SyntheticViewOptions scene_options;
-  scene_options.num_points = 200;
-  const testing::SyntheticScene scene = testing::MakeSyntheticScene(2, scene_options);
+  // {points, pixel noise, outlier ratio, distortion, seed}
+  const testing::SyntheticScene scene = testing::MakeSyntheticScene(2, {200, 0.0, 0.0, true, 1});
   std::mt19937 rng(11);
   std::uniform_real_distribution<double> x(0.0, 999.0), y(0.0, 749.0);
   FeatureSet features_i, features_j;
@@ -98,9 +94,8 @@ TEST(TwoViewGeometry, RejectsRandomMatchesWithAReason) {
 }
 
 TEST(TwoViewGeometry, RejectsTooFewMatchesBeforeRansac) {
-  testing::SyntheticViewOptions scene_options;
-  scene_options.num_points = 20;
-  const testing::SyntheticScene scene = testing::MakeSyntheticScene(2, scene_options);
+  // {points, pixel noise, outlier ratio, distortion, seed}
+  const testing::SyntheticScene scene = testing::MakeSyntheticScene(2, {20, 0.0, 0.0, true, 1});
   const TwoViewInput input = MakeInput(scene, 1);
   const TwoViewGeometry geometry = EstimateTwoViewGeometry(input.features_i, scene.intrinsics[0], input.features_j,
                                                            scene.intrinsics[1], input.matches);

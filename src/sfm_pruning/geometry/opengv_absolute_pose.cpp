@@ -1,18 +1,14 @@
 #include "sfm_pruning/geometry/opengv_absolute_pose.hpp"
 
-// OpenGV's sac headers use INT_MAX, pow and std::numeric_limits without including them.
 #include <algorithm>
-#include <climits>
-#include <cmath>
-#include <limits>
 #include <memory>
 #include <string>
 
 #include <opengv/absolute_pose/CentralAbsoluteAdapter.hpp>
 #include <opengv/sac_problems/absolute_pose/AbsolutePoseSacProblem.hpp>
-#include <opengv/sac/Ransac.hpp>
 
 #include "sfm_pruning/geometry/opengv_boundary.hpp"
+#include "sfm_pruning/geometry/opengv_ransac.hpp"
 #include "sfm_pruning/geometry/triangulation.hpp"
 
 namespace sfm_pruning {
@@ -34,12 +30,6 @@ std::vector<int> SelectInliers(const Pose& pose, const std::vector<Eigen::Vector
   return inliers;
 }
 
-AbsolutePoseResult Failure(const std::string& reason) {
-  AbsolutePoseResult result;
-  result.reason = reason;
-  return result;
-}
-
 }  // namespace
 
 double AbsolutePoseThresholdRad(const AbsolutePoseOptions& options) {
@@ -52,7 +42,7 @@ double AbsolutePoseThresholdRad(const AbsolutePoseOptions& options) {
 AbsolutePoseResult EstimateAbsolutePose(const std::vector<Eigen::Vector3d>& bearings,
                                         const std::vector<Eigen::Vector3d>& points_world,
                                         const AbsolutePoseOptions& options) {
-  if (bearings.size() != points_world.size()) return Failure("bearings and points differ in size");
+  if (bearings.size() != points_world.size()) return FailedResult<AbsolutePoseResult>("bearings and points differ in size");
   const opengv::bearingVectors_t opengv_bearings = ToOpenGVVectors(bearings);
   const opengv::points_t opengv_points = ToOpenGVVectors(points_world);
   opengv::absolute_pose::CentralAbsoluteAdapter adapter(opengv_bearings, opengv_points);  // keeps references
@@ -63,20 +53,14 @@ AbsolutePoseResult EstimateAbsolutePose(const std::vector<Eigen::Vector3d>& bear
   // Checked here because OpenGV prints to stderr instead of failing when the sample is too big.
   const size_t needed = std::max<size_t>(problem->getSampleSize(), options.min_num_inliers);
   if (bearings.size() < needed) {
-    return Failure("too few correspondences: " + std::to_string(bearings.size()) + " < " + std::to_string(needed));
+    return FailedResult<AbsolutePoseResult>("too few correspondences: " + std::to_string(bearings.size()) + " < " + std::to_string(needed));
   }
-  SeedOpenGVSampler(options.seed, problem.get());
-
   const double max_error_rad = AbsolutePoseThresholdRad(options);
-  opengv::sac::Ransac<SacProblem> ransac;
-  ransac.sac_model_ = problem;
-  ransac.threshold_ = OpenGVThresholdFromAngle(max_error_rad);
-  ransac.max_iterations_ = options.max_iterations;
-  ransac.probability_ = options.confidence;
-  if (!ransac.computeModel(/*debug_verbosity_level=*/0)) return Failure("RANSAC found no model");
-  if (!ransac.model_coefficients_.allFinite()) return Failure("RANSAC model is degenerate");
+  const OpenGVRansacOutcome ransac =
+      RunOpenGVRansac(problem, max_error_rad, options.ransac);
+  if (!ransac.found) return FailedResult<AbsolutePoseResult>("RANSAC found no model");
 
-  Pose pose = PoseFromOpenGV(ransac.model_coefficients_);
+  Pose pose = PoseFromOpenGV(ransac.model);
   std::vector<int> inliers = SelectInliers(pose, bearings, points_world, max_error_rad);
   for (int round = 0; round < options.refinement_rounds; ++round) {
     if (inliers.size() < static_cast<size_t>(problem->getSampleSize())) break;
@@ -93,7 +77,7 @@ AbsolutePoseResult EstimateAbsolutePose(const std::vector<Eigen::Vector3d>& bear
 
   AbsolutePoseResult result;
   result.pose = pose;
-  result.num_ransac_iterations = ransac.iterations_;
+  result.num_ransac_iterations = ransac.num_iterations;
   result.num_inliers = static_cast<int>(inliers.size());
   result.inliers = std::move(inliers);
   if (result.num_inliers < options.min_num_inliers) {

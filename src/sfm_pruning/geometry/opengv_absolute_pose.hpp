@@ -4,12 +4,12 @@
 // camera centre); OpenGV's camera -> world form never leaves the .cpp.
 #pragma once
 
-#include <cstdint>
 #include <string>
 #include <vector>
 
 #include <Eigen/Core>
 
+#include "sfm_pruning/geometry/ransac_options.hpp"
 #include "sfm_pruning/sfm/pose.hpp"
 
 namespace sfm_pruning {
@@ -27,9 +27,7 @@ struct AbsolutePoseOptions {
   // that many pixels subtends at the image centre (slightly looser towards the borders).
   double max_reprojection_error_px = 0.0;
   double focal_length_px = 0.0;
-  int max_iterations = 1000;
-  double confidence = 0.999;
-  uint64_t seed = 0;  // seed of OpenGV's sampler
+  RansacOptions ransac;
   // Rounds of nonlinear refinement on the inliers, each followed by inlier re-selection.
   int refinement_rounds = 2;
   // Below this many inliers the estimate is reported as failed.

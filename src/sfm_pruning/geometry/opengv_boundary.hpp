@@ -9,10 +9,6 @@
 // OpenGV RANSAC thresholds live in bearing space: 1 - cos(angle).
 #pragma once
 
-#include <cstdint>
-#include <functional>
-#include <memory>
-#include <random>
 #include <vector>
 
 #include <Eigen/Core>
@@ -41,16 +37,5 @@ double OpenGVThresholdFromAngle(double angle_rad);
 
 // Copies vectors into OpenGV's aligned container (bearings and points share the type).
 opengv::bearingVectors_t ToOpenGVVectors(const std::vector<Eigen::Vector3d>& vectors);
-
-// Re-seeds an OpenGV SampleConsensusProblem. OpenGV seeds its sampler either from the clock
-// (randomSeed = true, not reproducible) or with the constant 12345 (false); to make the seed an
-// option we construct with false, then replace the engine and the bound generator, both public
-// members. rng_gen_ binds a *copy* of the engine, so it must be rebuilt after seeding.
-template <typename SacProblem>
-void SeedOpenGVSampler(uint64_t seed, SacProblem* problem) {
-  std::seed_seq sequence{static_cast<uint32_t>(seed), static_cast<uint32_t>(seed >> 32)};
-  problem->rng_alg_.seed(sequence);
-  problem->rng_gen_ = std::make_shared<std::function<int()>>(std::bind(*problem->rng_dist_, problem->rng_alg_));
-}
 
 }  // namespace sfm_pruning

@@ -1,9 +1,5 @@
 #include "sfm_pruning/geometry/opengv_relative_pose.hpp"
 
-// OpenGV's sac headers use INT_MAX, pow and std::numeric_limits without including them.
-#include <climits>
-#include <cmath>
-#include <limits>
 #include <memory>
 #include <optional>
 #include <string>
@@ -11,10 +7,10 @@
 #include <opengv/relative_pose/CentralRelativeAdapter.hpp>
 #include <opengv/relative_pose/methods.hpp>
 #include <opengv/sac_problems/relative_pose/CentralRelativePoseSacProblem.hpp>
-#include <opengv/sac/Ransac.hpp>
 
 #include "sfm_pruning/geometry/epipolar_geometry.hpp"
 #include "sfm_pruning/geometry/opengv_boundary.hpp"
+#include "sfm_pruning/geometry/opengv_ransac.hpp"
 #include "sfm_pruning/geometry/relative_pose_refinement.hpp"
 #include "sfm_pruning/geometry/triangulation.hpp"
 
@@ -131,18 +127,12 @@ RelativePose ResolveByCheirality(const RelativePose& pose, const std::vector<Eig
   return best;
 }
 
-RelativePoseResult Failure(const std::string& reason) {
-  RelativePoseResult result;
-  result.reason = reason;
-  return result;
-}
-
 }  // namespace
 
 RelativePoseResult EstimateRelativePose(const std::vector<Eigen::Vector3d>& bearings_i,
                                         const std::vector<Eigen::Vector3d>& bearings_j,
                                         const RelativePoseOptions& options) {
-  if (bearings_i.size() != bearings_j.size()) return Failure("bearing arrays differ in size");
+  if (bearings_i.size() != bearings_j.size()) return FailedResult<RelativePoseResult>("bearing arrays differ in size");
   const opengv::bearingVectors_t opengv_i = ToOpenGVVectors(bearings_i);
   const opengv::bearingVectors_t opengv_j = ToOpenGVVectors(bearings_j);
   // View i is OpenGV's viewpoint 1 (see opengv_boundary.hpp). The adapter keeps references.
@@ -154,20 +144,15 @@ RelativePoseResult EstimateRelativePose(const std::vector<Eigen::Vector3d>& bear
   const auto problem = std::make_shared<MinimalSampleProblem>(adapter, algorithm, max_error_rad);
   // Checked here because OpenGV prints to stderr instead of failing when the sample is too big.
   if (bearings_i.size() < static_cast<size_t>(problem->getSampleSize())) {
-    return Failure("too few correspondences: " + std::to_string(bearings_i.size()) + " < " +
+    return FailedResult<RelativePoseResult>("too few correspondences: " + std::to_string(bearings_i.size()) + " < " +
                    std::to_string(problem->getSampleSize()));
   }
-  SeedOpenGVSampler(options.seed, problem.get());
+  const OpenGVRansacOutcome ransac =
+      RunOpenGVRansac(problem, max_error_rad, options.ransac);
+  if (!ransac.found) return FailedResult<RelativePoseResult>("RANSAC found no model");
 
-  opengv::sac::Ransac<SacProblem> ransac;
-  ransac.sac_model_ = problem;
-  ransac.threshold_ = OpenGVThresholdFromAngle(max_error_rad);
-  ransac.max_iterations_ = options.max_iterations;
-  ransac.probability_ = options.confidence;
-  if (!ransac.computeModel(/*debug_verbosity_level=*/0)) return Failure("RANSAC found no model");
-
-  RelativePose pose = RelativePoseFromOpenGV(ransac.model_coefficients_);
-  if (!(pose.translation.norm() > 0.0) || !pose.rotation.allFinite()) return Failure("RANSAC model is degenerate");
+  RelativePose pose = RelativePoseFromOpenGV(ransac.model);
+  if (!(pose.translation.norm() > 0.0) || !pose.rotation.allFinite()) return FailedResult<RelativePoseResult>("RANSAC model is degenerate");
   pose.translation.normalize();
   pose = ResolveByCheirality(pose, bearings_i, bearings_j, max_error_rad);
 
@@ -187,7 +172,7 @@ RelativePoseResult EstimateRelativePose(const std::vector<Eigen::Vector3d>& bear
 
   RelativePoseResult result;
   result.relative_pose = pose;
-  result.num_ransac_iterations = ransac.iterations_;
+  result.num_ransac_iterations = ransac.num_iterations;
   result.num_inliers = static_cast<int>(set.inliers.size());
   result.num_inliers_in_front = set.num_in_front;
   result.inliers = std::move(set.inliers);

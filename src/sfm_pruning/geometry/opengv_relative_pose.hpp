@@ -4,12 +4,12 @@
 // The result is in pose.hpp's convention (X_j = R_ij X_i + t_ij) with |t_ij| = 1.
 #pragma once
 
-#include <cstdint>
 #include <string>
 #include <vector>
 
 #include <Eigen/Core>
 
+#include "sfm_pruning/geometry/ransac_options.hpp"
 #include "sfm_pruning/sfm/pose.hpp"
 
 namespace sfm_pruning {
@@ -20,13 +20,9 @@ struct RelativePoseOptions {
   // Inlier threshold on the angular epipolar error (epipolar_geometry.hpp), also given to
   // OpenGV's RANSAC as 1 - cos(angle). 0.25 deg is about 4 px at a 1000 px focal length.
   double max_angular_error_deg = 0.25;
-  // RANSAC stops at this many hypotheses or earlier once `confidence` is reached. Samples are
-  // minimal (5 correspondences), so at confidence 0.999 about 7k hypotheses are needed at 25 %
-  // inliers, 700 at 40 %, 220 at 50 % and 28 at 75 %.
-  int max_iterations = 10000;
-  double confidence = 0.999;
-  // Seed of OpenGV's sampler; same input + same seed = same output.
-  uint64_t seed = 0;
+  // Samples are minimal (5 correspondences), so at confidence 0.999 about 7k hypotheses are
+  // needed at 25 % inliers, 700 at 40 %, 220 at 50 % and 28 at 75 %.
+  RansacOptions ransac = {/*max_iterations=*/10000, /*confidence=*/0.999, /*seed=*/0};
   // Ceres refinement rounds on the inliers, each followed by inlier re-selection; 0 disables.
   int refinement_rounds = 2;
   // Drop inliers that triangulate behind either camera. Rays whose parallax is below the

@@ -19,7 +19,7 @@ struct TwoViewGeometryOptions {
   int min_num_inliers = 30;
   // ...and at least this fraction of the putative matches.
   double min_inlier_ratio = 0.25;
-  // RANSAC threshold (max_angular_error_deg), iterations, confidence, seed, refinement.
+  // RANSAC threshold (max_angular_error_deg), ransac (iterations, confidence, seed), refinement.
   RelativePoseOptions relative_pose;
 };
 
