@@ -1,10 +1,10 @@
 // sfm_data.json against hand-made golden files (tests/data/openmvg_json), legacy variants and
 // malformed input.
+#include <gtest/gtest.h>
+
 #include <cmath>
 #include <fstream>
 #include <string>
-
-#include <gtest/gtest.h>
 
 #include "sfm_pruning/io/openmvg_sfm_data.hpp"
 #include "sfm_pruning/util/atomic_file.hpp"
@@ -171,8 +171,9 @@ TEST(OpenMvgSfmDataJson, ReadsVersion02WithLegacyValue0Intrinsics) {
   EXPECT_EQ(data.views.at(0).filename, "a.jpg");
   EXPECT_FALSE(data.views.at(0).has_prior_record);
   ASSERT_EQ(data.intrinsics.size(), 2u);
-  EXPECT_EQ(data.intrinsics.at(0), CameraIntrinsics(CameraModel::kPinholeBrownT2, 1920, 1080,
-                                                    {1500.0, 960.0, 540.0, 0.1, -0.05, 0.001, 0.0002, -0.0004}));
+  EXPECT_EQ(data.intrinsics.at(0),
+            CameraIntrinsics(CameraModel::kPinholeBrownT2, 1920, 1080,
+                             {1500.0, 960.0, 540.0, 0.1, -0.05, 0.001, 0.0002, -0.0004}));
   EXPECT_EQ(data.intrinsics.at(1), CameraIntrinsics(CameraModel::kFisheye, 1280, 960,
                                                     {600.0, 640.0, 480.0, 0.02, -0.01, 0.005, -0.001}));
   ASSERT_EQ(data.control_points.size(), 1u);
@@ -200,7 +201,8 @@ TEST(OpenMvgSfmDataJson, ReadsReorderedKeysUnknownFieldsAndNonFiniteTokens) {
   ASSERT_TRUE(data.views.at(0).center_prior.has_value());
   EXPECT_EQ(data.views.at(0).center_prior->center, Eigen::Vector3d(7.0, 8.0, 9.0));
   EXPECT_EQ(data.views.at(0).center_prior->weight, Eigen::Vector3d(1.0, 2.0, 3.0));
-  EXPECT_EQ(data.intrinsics.at(7), CameraIntrinsics(CameraModel::kPinholeRadialK1, 100, 80, {90.0, 50.0, 40.0, 0.5}));
+  EXPECT_EQ(data.intrinsics.at(7),
+            CameraIntrinsics(CameraModel::kPinholeRadialK1, 100, 80, {90.0, 50.0, 40.0, 0.5}));
   EXPECT_EQ(data.poses.at(1).center, Eigen::Vector3d(1.0, 2.0, 3.0));
   const Landmark& landmark = data.structure.at(4);
   EXPECT_TRUE(std::isnan(landmark.X.x()));
@@ -222,48 +224,67 @@ TEST(OpenMvgSfmDataJson, WritesNonFiniteValuesAsCerealDoes) {
   EXPECT_EQ(back.structure.at(0).X.y(), std::numeric_limits<double>::infinity());
 }
 
+TEST(OpenMvgSfmDataJson, ResolvesRepeatedSharedPointers) {
+  // cereal writes a pointer it has already written as {"id": m} without data.
+  const std::string json = R"({"sfm_data_version": "0.3", "root_path": "", "views": [
+      {"key": 0, "value": {"polymorphic_id": 1073741824, "ptr_wrapper": {"id": 2147483649, "data": {
+          "local_path": "", "filename": "a.jpg", "width": 4, "height": 3, "id_view": 0, "id_intrinsic": 0,
+          "id_pose": 0}}}},
+      {"key": 1, "value": {"polymorphic_id": 1073741824, "ptr_wrapper": {"id": 2147483650, "data": {
+          "local_path": "", "filename": "b.jpg", "width": 4, "height": 3, "id_view": 1, "id_intrinsic": 1,
+          "id_pose": 1}}}}],
+    "intrinsics": [
+      {"key": 0, "value": {"polymorphic_id": 2147483649, "polymorphic_name": "pinhole",
+          "ptr_wrapper": {"id": 2147483651, "data": {"width": 4, "height": 3, "focal_length": 5.0,
+          "principal_point": [2.0, 1.5]}}}},
+      {"key": 1, "value": {"polymorphic_id": 1, "ptr_wrapper": {"id": 3}}}],
+    "extrinsics": [], "structure": [], "control_points": []})";
+  const fs::path path = testing::ScratchDir("openmvg_sfm_data_shared_pointer") / "sfm_data.json";
+  WriteText(path, json);
+  const SfmData data = ReadSfmData(path);
+  ASSERT_EQ(data.intrinsics.size(), 2u);
+  EXPECT_EQ(data.intrinsics.at(1), CameraIntrinsics::Pinhole(4, 3, 5.0, 2.0, 1.5));
+}
+
 TEST(OpenMvgSfmDataJson, ErrorsNameTheFileAndTheProblem) {
-  EXPECT_NE(std::string(ReadError("")).find("bad.json: invalid or truncated JSON at byte 0"), std::string::npos);
+  EXPECT_NE(std::string(ReadError("")).find("bad.json: invalid or truncated JSON at byte 0"),
+            std::string::npos);
   const std::string golden = ReadFileToString(GoldenFile("all_types.json"));
   EXPECT_NE(ReadError(golden.substr(0, 1000)).find("at byte 1000"), std::string::npos);
 
-  std::string wrong_type = golden;
-  const std::string width = "\"width\": 1920,";
-  wrong_type.replace(wrong_type.find(width), width.size(), "\"width\": 1920.0,");
-  EXPECT_NE(ReadError(wrong_type).find("bad.json: views[3].value.ptr_wrapper.data.width: expected unsigned integer"),
-            std::string::npos)
-      << ReadError(wrong_type);
-
-  std::string unknown_model = golden;
-  const std::string fisheye = "\"polymorphic_name\": \"fisheye\"";
-  unknown_model.replace(unknown_model.find(fisheye), fisheye.size(), "\"polymorphic_name\": \"fancy_cam\"");
-  EXPECT_NE(ReadError(unknown_model).find("intrinsics[4].value: unknown camera model \"fancy_cam\""),
+  // Each case damages the golden file in one place.
+  const auto error_after_replacing = [&](const std::string& from, const std::string& to) {
+    std::string text = golden;
+    const size_t at = text.find(from);
+    EXPECT_NE(at, std::string::npos) << from;
+    return at == std::string::npos ? std::string() : ReadError(text.replace(at, from.size(), to));
+  };
+  EXPECT_NE(error_after_replacing("\"width\": 1920,", "\"width\": 1920.0,")
+                .find("bad.json: views[3].value.ptr_wrapper.data.width: expected unsigned integer"),
             std::string::npos);
-
-  std::string missing = golden;
-  const std::string focal = "\"focal_length\": 2760.0,";
-  missing.erase(missing.find(focal), focal.size());
-  EXPECT_NE(ReadError(missing).find("intrinsics[0].value.ptr_wrapper.data: missing field \"focal_length\""),
+  EXPECT_NE(error_after_replacing("\"polymorphic_name\": \"fisheye\"", "\"polymorphic_name\": \"fancy_cam\"")
+                .find("intrinsics[4].value: unknown camera model \"fancy_cam\""),
             std::string::npos);
-
-  std::string wrong_disto = golden;
-  const std::string k1 = "-0.125";
-  wrong_disto.replace(wrong_disto.find(k1), k1.size(), "-0.125, 3.0");
-  EXPECT_NE(ReadError(wrong_disto).find("intrinsics[1].value.ptr_wrapper.data.disto_k1: expected 1 numbers, got 2"),
+  EXPECT_NE(error_after_replacing("\"focal_length\": 2760.0,", "")
+                .find("intrinsics[0].value.ptr_wrapper.data: missing field \"focal_length\""),
             std::string::npos);
-
-  std::string missing_view = golden;
-  const std::string observed = "\"key\": 7,\n                        \"value\": {\n                            \"id_feat\": 42";
-  ASSERT_NE(missing_view.find(observed), std::string::npos);
-  missing_view.replace(missing_view.find(observed), std::string("\"key\": 7,").size(), "\"key\": 70,");
-  EXPECT_NE(ReadError(missing_view).find("bad.json: landmark 5 is observed in view 70, which does not exist"),
+  EXPECT_NE(error_after_replacing("-0.125", "-0.125, 3.0")
+                .find("intrinsics[1].value.ptr_wrapper.data.disto_k1: expected 1 numbers, got 2"),
             std::string::npos);
-
-  std::string orphan = golden;
-  const std::string pose_ref = "\"id_pose\": 7";
-  orphan.replace(orphan.find(pose_ref), pose_ref.size(), "\"id_pose\": 8");
-  EXPECT_NE(ReadError(orphan).find("pose 7 is used by no view"), std::string::npos);
-
+  EXPECT_NE(
+      error_after_replacing(
+          "\"key\": 7,\n                        \"value\": {\n                            \"id_feat\": 42",
+          "\"key\": 70,\n                        \"value\": {\n                            \"id_feat\": 42")
+          .find("bad.json: landmark 5 is observed in view 70, which does not exist"),
+      std::string::npos);
+  EXPECT_NE(error_after_replacing("\"id_pose\": 7", "\"id_pose\": 8").find("pose 7 is used by no view"),
+            std::string::npos);
+  EXPECT_NE(error_after_replacing("\"polymorphic_id\": 4,", "\"polymorphic_id\": 9,")
+                .find("intrinsics[6].value.polymorphic_id: polymorphic id 9 names no earlier type"),
+            std::string::npos);
+  EXPECT_NE(error_after_replacing("\"id\": 2147483650,", "\"id\": 5,")
+                .find("views[1].value.ptr_wrapper.id: pointer id 5 refers to no earlier object"),
+            std::string::npos);
   EXPECT_NE(ReadError("{\"root_path\": \"\"}").find("missing field \"sfm_data_version\""), std::string::npos);
   EXPECT_NE(ReadError("[1, 2]").find("expected a JSON object"), std::string::npos);
   EXPECT_NE(ReadError("{}", "scene.xml").find("unsupported sfm_data extension"), std::string::npos);

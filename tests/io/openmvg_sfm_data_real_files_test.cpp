@@ -1,11 +1,11 @@
 // sfm_data.json files written by OpenMVG 2.1 itself (../shared/formats/openmvg/sceaux_castle).
+#include <gtest/gtest.h>
+
 #include <algorithm>
+#include <nlohmann/json.hpp>
 #include <sstream>
 #include <string>
 #include <vector>
-
-#include <gtest/gtest.h>
-#include <nlohmann/json.hpp>
 
 #include "sfm_pruning/io/openmvg_sfm_data.hpp"
 #include "sfm_pruning/util/atomic_file.hpp"

@@ -1,11 +1,11 @@
 // sfm_data.json / .bin: exact round trips and robustness against damaged files.
+#include <gtest/gtest.h>
+
 #include <cmath>
 #include <fstream>
 #include <limits>
 #include <random>
 #include <string>
-
-#include <gtest/gtest.h>
 
 #include "sfm_pruning/io/openmvg_sfm_data.hpp"
 #include "sfm_pruning/util/atomic_file.hpp"
@@ -24,9 +24,9 @@ SfmData AwkwardScene(bool with_nan) {
   std::uniform_real_distribution<double> uniform(-1000.0, 1000.0);
   SfmData data;
   data.root_path = "relative/images with space/ünïcode";
-  const CameraModel models[] = {CameraModel::kPinhole,        CameraModel::kPinholeRadialK1,
+  const CameraModel models[] = {CameraModel::kPinhole,         CameraModel::kPinholeRadialK1,
                                 CameraModel::kPinholeRadialK3, CameraModel::kPinholeBrownT2,
-                                CameraModel::kFisheye,        CameraModel::kSpherical};
+                                CameraModel::kFisheye,         CameraModel::kSpherical};
   IndexT intrinsic_id = 3;
   for (CameraModel model : models) {
     std::vector<double> params(NumCameraParams(model));
@@ -45,13 +45,15 @@ SfmData AwkwardScene(bool with_nan) {
       view.local_path = k == 0 ? "" : "sub\"dir";  // a quote must survive escaping
       view.width = intrinsic.width();
       view.height = intrinsic.height();
-      if (view_id % 3 == 0) view.center_prior = PoseCenterPrior{{uniform(rng), 1e-300, 1e300}, {1.0, 0.5, 0.25}};
+      if (view_id % 3 == 0)
+        view.center_prior = PoseCenterPrior{{uniform(rng), 1e-300, 1e300}, {1.0, 0.5, 0.25}};
       if (view_id % 3 == 1) view.has_prior_record = true;
       data.views[view_id] = view;
       const Eigen::Matrix3d R =
           Eigen::AngleAxisd(uniform(rng), Eigen::Vector3d(uniform(rng), uniform(rng), 1.0).normalized())
               .toRotationMatrix();
-      data.poses[view.id_pose] = Pose(R, {uniform(rng), 1.0 / 3.0, std::numeric_limits<double>::denorm_min()});
+      data.poses[view.id_pose] =
+          Pose(R, {uniform(rng), 1.0 / 3.0, std::numeric_limits<double>::denorm_min()});
     }
   }
   View unknown;
@@ -168,7 +170,8 @@ void DamageAndReload(const std::string& file_name) {
       ++truncations_rejected;
     }
   }
-  EXPECT_EQ(truncations_rejected, static_cast<int>((good.size() + step - 1) / step));  // every cut is detected
+  EXPECT_EQ(truncations_rejected,
+            static_cast<int>((good.size() + step - 1) / step));  // every cut is detected
   std::mt19937 rng(7);
   std::uniform_int_distribution<size_t> position(0, good.size() - 1);
   std::uniform_int_distribution<int> byte(0, 255);

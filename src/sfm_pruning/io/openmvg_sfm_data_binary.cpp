@@ -53,8 +53,8 @@ class BinaryReader {
   BinaryReader(const std::string& bytes, const std::string& source) : bytes_(bytes), source_(source) {
     const uint8_t endianness = U8("endianness flag");
     if (endianness != kLittleEndian && endianness != kBigEndian) {
-      throw FileError(source_, "not a cereal portable binary file (endianness flag " +
-                                   std::to_string(endianness) + ")");
+      throw FileError(
+          source_, "not a cereal portable binary file (endianness flag " + std::to_string(endianness) + ")");
     }
     big_endian_ = endianness == kBigEndian;
   }
@@ -80,7 +80,8 @@ class BinaryReader {
   size_t Count(const char* what, size_t min_bytes_per_element) {
     const uint64_t count = Unsigned(8, what);
     if (count > (bytes_.size() - offset_) / min_bytes_per_element) {
-      throw Fail(std::string("truncated file: ") + what + " announces " + std::to_string(count) + " elements");
+      throw Fail(std::string("truncated file: ") + what + " announces " + std::to_string(count) +
+                 " elements");
     }
     return static_cast<size_t>(count);
   }
@@ -217,7 +218,8 @@ class SfmDataBinaryReader {
     const uint32_t id = in_.U32("pointer id");
     if (id & kNewIdFlag) return (*table)[id & ~kNewIdFlag] = read_data();
     const auto it = table->find(id);
-    if (it == table->end()) throw in_.Fail("pointer id " + std::to_string(id) + " refers to no earlier object");
+    if (it == table->end())
+      throw in_.Fail("pointer id " + std::to_string(id) + " refers to no earlier object");
     return it->second;
   }
 
@@ -286,13 +288,16 @@ Pose ReadPose(BinaryReader* in) {
 Landmark ReadLandmark(BinaryReader* in) {
   Landmark landmark;
   landmark.X = in->Vector("landmark X");
-  ReadMap(in, "observations", 4 + 4 + 8, [&] {
-    Observation observation;
-    observation.id_feat = in->U32("id_feat");
-    const std::vector<double> x = in->Doubles("observation x", 2);
-    observation.x = {x[0], x[1]};
-    return observation;
-  }, &landmark.observations);
+  ReadMap(
+      in, "observations", 4 + 4 + 8,
+      [&] {
+        Observation observation;
+        observation.id_feat = in->U32("id_feat");
+        const std::vector<double> x = in->Doubles("observation x", 2);
+        observation.x = {x[0], x[1]};
+        return observation;
+      },
+      &landmark.observations);
   return landmark;
 }
 
@@ -304,7 +309,8 @@ inline constexpr size_t kMinLandmarkEntryBytes = 4 + 8 + 8;
 
 }  // namespace
 
-void WriteSfmDataBinary(const SfmData& data, SfmDataParts parts, std::ostream& out, const std::string& source) {
+void WriteSfmDataBinary(const SfmData& data, SfmDataParts parts, std::ostream& out,
+                        const std::string& source) {
   BinaryWriter w;
   w.U8(kLittleEndian);
   w.String(kWrittenVersion);
@@ -355,14 +361,19 @@ SfmData ParseSfmDataBinary(const std::string& bytes, const std::string& source, 
   all.root_path = in.String("root_path");
   // Every section must be read to reach the next one; unrequested ones are dropped at the end.
   SfmDataBinaryReader reader(&in, version);
-  ReadMap(&in, "views", kMinViewEntryBytes, [&] { return reader.ReadViewValue(); }, &all.views);
-  ReadMap(&in, "intrinsics", kMinIntrinsicEntryBytes, [&] { return reader.ReadIntrinsicValue(); },
-          &all.intrinsics);
-  ReadMap(&in, "extrinsics", kMinPoseEntryBytes, [&] { return ReadPose(&in); }, &all.poses);
-  ReadMap(&in, "structure", kMinLandmarkEntryBytes, [&] { return ReadLandmark(&in); }, &all.structure);
+  ReadMap(
+      &in, "views", kMinViewEntryBytes, [&] { return reader.ReadViewValue(); }, &all.views);
+  ReadMap(
+      &in, "intrinsics", kMinIntrinsicEntryBytes, [&] { return reader.ReadIntrinsicValue(); },
+      &all.intrinsics);
+  ReadMap(
+      &in, "extrinsics", kMinPoseEntryBytes, [&] { return ReadPose(&in); }, &all.poses);
+  ReadMap(
+      &in, "structure", kMinLandmarkEntryBytes, [&] { return ReadLandmark(&in); }, &all.structure);
   if (HasControlPoints(version)) {
-    ReadMap(&in, "control_points", kMinLandmarkEntryBytes, [&] { return ReadLandmark(&in); },
-            &all.control_points);
+    ReadMap(
+        &in, "control_points", kMinLandmarkEntryBytes, [&] { return ReadLandmark(&in); },
+        &all.control_points);
   }
   if (!in.AtEnd()) throw in.Fail("unexpected data after the last section");
 

@@ -67,8 +67,8 @@ struct IntrinsicRecord {
   uint32_t width = 0;
   uint32_t height = 0;
   double focal_length = 0.0;
-  std::vector<double> principal_point;  // [cx, cy]
-  std::vector<double> distortion;       // the model's disto_* / fisheye vector
+  std::vector<double> principal_point;   // [cx, cy]
+  std::vector<double> distortion;        // the model's disto_* / fisheye vector
   std::optional<double> focal_length_y;  // kPinholeFxFy extension
 };
 
@@ -92,6 +92,7 @@ inline std::string ViewTypeName(const View& view) { return IsViewPriors(view) ? 
 SfmData ParseSfmDataJson(const std::string& text, const std::string& source, SfmDataParts parts);
 void WriteSfmDataJson(const SfmData& data, SfmDataParts parts, std::ostream& out);
 SfmData ParseSfmDataBinary(const std::string& bytes, const std::string& source, SfmDataParts parts);
-void WriteSfmDataBinary(const SfmData& data, SfmDataParts parts, std::ostream& out, const std::string& source);
+void WriteSfmDataBinary(const SfmData& data, SfmDataParts parts, std::ostream& out,
+                        const std::string& source);
 
 }  // namespace sfm_pruning::openmvg_format

@@ -10,8 +10,9 @@
 
 // cereal's header first: it sets the rapidjson configuration (throwing asserts, NaN support)
 // that every translation unit using rapidjson in this library must share.
-#include <cereal/archives/json.hpp>
 #include <rapidjson/error/en.h>
+
+#include <cereal/archives/json.hpp>
 
 #include "sfm_pruning/io/openmvg_sfm_data_format.hpp"
 #include "sfm_pruning/util/error.hpp"
@@ -44,7 +45,9 @@ class JsonNode {
     if (!value_->IsArray()) throw Fail("expected array");
     return value_->Size();
   }
-  JsonNode At(size_t index) const { return JsonNode((*value_)[static_cast<rapidjson::SizeType>(index)], this, nullptr, index); }
+  JsonNode At(size_t index) const {
+    return JsonNode((*value_)[static_cast<rapidjson::SizeType>(index)], this, nullptr, index);
+  }
 
   bool IsObject() const { return value_->IsObject(); }
   uint32_t Uint() const {
@@ -129,7 +132,8 @@ T ReadPointer(const JsonNode& ptr_wrapper, const ReadData& read_data, PointerTab
     return object;
   }
   const auto it = table->find(id);
-  if (it == table->end()) throw id_node.Fail("pointer id " + std::to_string(id) + " refers to no earlier object");
+  if (it == table->end())
+    throw id_node.Fail("pointer id " + std::to_string(id) + " refers to no earlier object");
   return it->second;
 }
 
@@ -157,11 +161,13 @@ class SfmDataJsonReader {
     std::string type;
     if (HasPolymorphicViews(version_)) {
       type = ReadPolymorphicType(value, &types_);
-      if (!type.empty() && type != kViewPriorsTypeName) throw value.Fail("unknown view type \"" + type + "\"");
+      if (!type.empty() && type != kViewPriorsTypeName)
+        throw value.Fail("unknown view type \"" + type + "\"");
     }
     const JsonNode ptr_wrapper = value.Child("ptr_wrapper");
     return ReadPointer(
-        ptr_wrapper, [&](const JsonNode& data) { return ReadViewData(data, !type.empty()); }, &view_pointers_);
+        ptr_wrapper, [&](const JsonNode& data) { return ReadViewData(data, !type.empty()); },
+        &view_pointers_);
   }
 
   CameraIntrinsics ReadIntrinsicValue(const JsonNode& value) {
@@ -170,7 +176,8 @@ class SfmDataJsonReader {
     if (!ModelFromTypeName(type, &model)) throw value.Fail("unknown camera model \"" + type + "\"");
     const JsonNode ptr_wrapper = value.Child("ptr_wrapper");
     return ReadPointer(
-        ptr_wrapper, [&](const JsonNode& data) { return ReadIntrinsicData(data, model); }, &intrinsic_pointers_);
+        ptr_wrapper, [&](const JsonNode& data) { return ReadIntrinsicData(data, model); },
+        &intrinsic_pointers_);
   }
 
  private:
@@ -264,14 +271,17 @@ SfmData ParseDocument(const std::string& text, const std::string& source, SfmDat
   data.root_path = root.Child("root_path").String();
   SfmDataJsonReader reader(version);
   if (HasParts(parts, SfmDataParts::kViews)) {
-    ReadMap(root.Child("views"), [&](const JsonNode& v) { return reader.ReadViewValue(v); }, &data.views);
+    ReadMap(
+        root.Child("views"), [&](const JsonNode& v) { return reader.ReadViewValue(v); }, &data.views);
   }
   if (HasParts(parts, SfmDataParts::kIntrinsics)) {
-    ReadMap(root.Child("intrinsics"), [&](const JsonNode& v) { return reader.ReadIntrinsicValue(v); },
-            &data.intrinsics);
+    ReadMap(
+        root.Child("intrinsics"), [&](const JsonNode& v) { return reader.ReadIntrinsicValue(v); },
+        &data.intrinsics);
   }
   if (HasParts(parts, SfmDataParts::kExtrinsics)) ReadMap(root.Child("extrinsics"), ReadPose, &data.poses);
-  if (HasParts(parts, SfmDataParts::kStructure)) ReadMap(root.Child("structure"), ReadLandmark, &data.structure);
+  if (HasParts(parts, SfmDataParts::kStructure))
+    ReadMap(root.Child("structure"), ReadLandmark, &data.structure);
   if (HasParts(parts, SfmDataParts::kControlPoints) && HasControlPoints(version)) {
     ReadMap(root.Child("control_points"), ReadLandmark, &data.control_points);
   }

@@ -3,13 +3,12 @@
 // order are byte for byte what OpenMVG writes. The polymorphic envelope is written by hand from
 // PolymorphicIdWriter, which numbers types and pointers the way cereal's registry would; this
 // keeps cereal's global polymorphic type registration out of the library.
-#include <ostream>
-#include <string>
-#include <vector>
-
 #include <cereal/archives/json.hpp>
 #include <cereal/types/string.hpp>
 #include <cereal/types/vector.hpp>
+#include <ostream>
+#include <string>
+#include <vector>
 
 #include "sfm_pruning/io/openmvg_sfm_data_format.hpp"
 
