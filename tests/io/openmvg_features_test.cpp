@@ -1,37 +1,21 @@
 // OpenMVG .feat / .desc / image_describer.json: hand-made golden files, exact round trips, bad
 // input, and the real OpenMVG 2.1 Sceaux Castle project.
+#include "sfm_pruning/io/openmvg_features.hpp"
+
 #include <gtest/gtest.h>
 
 #include <cmath>
 #include <limits>
 
-#include "sfm_pruning/io/openmvg_features.hpp"
+#include "openmvg_features_test_support.hpp"
 #include "sfm_pruning/io/openmvg_sfm_data.hpp"
 #include "sfm_pruning/util/atomic_file.hpp"
 #include "sfm_pruning/util/error.hpp"
 #include "support/test_data.hpp"
 
-namespace sfm_pruning {
+namespace sfm_pruning::openmvg_features_test {
 namespace {
 namespace fs = std::filesystem;
-
-fs::path Golden(const std::string& name) { return testing::TestDataDir() / "openmvg_features" / name; }
-
-// Runs `call`, expects an Error, and returns its message.
-template <typename Call>
-std::string ErrorMessage(Call call) {
-  try {
-    call();
-  } catch (const Error& e) {
-    return e.what();
-  }
-  ADD_FAILURE() << "expected sfm_pruning::Error";
-  return {};
-}
-
-void WriteText(const fs::path& path, const std::string& text) {
-  WriteFileAtomically(path, false, [&](std::ostream& out) { out << text; });
-}
 
 TEST(OpenMvgFeat, ReadsScaleOrientationLinesAndRewritesThemByteForByte) {
   const std::vector<Keypoint> keypoints = ReadFeatFile(Golden("sift.feat"));
@@ -97,7 +81,8 @@ TEST(OpenMvgFeat, RejectsGarbageMixedAndMissingFiles) {
   EXPECT_THROW(ReadFeatFile(dir / "three.feat"), Error);
   WriteText(dir / "nan.feat", "1 nan 3 4\n");
   EXPECT_THROW(ReadFeatFile(dir / "nan.feat"), Error);
-  EXPECT_NE(ErrorMessage([&] { ReadFeatFile(dir / "missing.feat"); }).find("missing.feat"), std::string::npos);
+  EXPECT_NE(ErrorMessage([&] { ReadFeatFile(dir / "missing.feat"); }).find("missing.feat"),
+            std::string::npos);
 }
 
 TEST(OpenMvgDesc, ReadsAndRewritesGoldenFile) {
@@ -134,7 +119,8 @@ TEST(OpenMvgImageDescriber, WritesWhatCerealWritesAndReadsTheNames) {
 TEST(OpenMvgImageDescriber, RejectsRegionsWeCannotUse) {
   const ImageDescriberInfo akaze = ReadImageDescriber(Golden("image_describer_akaze.json"));
   EXPECT_EQ(akaze.regions_type, "AKAZE_Float_Regions");
-  const std::string message = ErrorMessage([&] { RequireSiftRegions(akaze, Golden("image_describer_akaze.json")); });
+  const std::string message =
+      ErrorMessage([&] { RequireSiftRegions(akaze, Golden("image_describer_akaze.json")); });
   EXPECT_NE(message.find("AKAZE_Float_Regions"), std::string::npos);
   EXPECT_EQ(message.find('\n'), std::string::npos);
   EXPECT_THROW(ReadImageDescriber(Golden("sift.feat")), Error);  // not JSON
@@ -168,11 +154,11 @@ TEST(OpenMvgProjectFeatures, WriteThenReadGivesTheSameFeatures) {
   EXPECT_TRUE(fs::exists(dir / "left.feat"));
   EXPECT_TRUE(fs::exists(dir / "right.image.desc"));
   EXPECT_TRUE(fs::exists(dir / "image_describer.json"));
-  const FeaturesPerView back = ReadOpenMvgFeatures(TwoViews(), dir, true,
-                                                   [&](const std::string&, size_t done, size_t total) {
-                                                     EXPECT_EQ(total, 2u);
-                                                     progress.push_back(done);
-                                                   });
+  const FeaturesPerView back =
+      ReadOpenMvgFeatures(TwoViews(), dir, true, [&](const std::string&, size_t done, size_t total) {
+        EXPECT_EQ(total, 2u);
+        progress.push_back(done);
+      });
   EXPECT_EQ(progress, (std::vector<size_t>{0, 1, 2}));
   const FeaturesPerView expected = TwoViewFeatures();
   ASSERT_EQ(back.size(), 2u);
@@ -223,7 +209,8 @@ TEST(OpenMvgProjectFeatures, RefusesToWriteAmbiguousOrInconsistentFeatures) {
 
 TEST(OpenMvgProjectFeatures, ReadsTheRealSceauxCastleProjectAndRewritesItExactly) {
   PRUNESFM_REQUIRE_SHARED("formats/openmvg/sceaux_castle/matches", matches_dir);
-  const SfmData scene = ReadSfmData(matches_dir / "sfm_data.json", SfmDataParts::kViews | SfmDataParts::kIntrinsics);
+  const SfmData scene =
+      ReadSfmData(matches_dir / "sfm_data.json", SfmDataParts::kViews | SfmDataParts::kIntrinsics);
   ASSERT_EQ(scene.views.size(), 11u);
   EXPECT_EQ(ReadImageDescriber(matches_dir / "image_describer.json").regions_type, "SIFT_Regions");
   const FeaturesPerView features = ReadOpenMvgFeatures(scene, matches_dir, true);
@@ -246,8 +233,9 @@ TEST(OpenMvgProjectFeatures, ReadsTheRealSceauxCastleProjectAndRewritesItExactly
           << view.filename << extension;
     }
   }
-  EXPECT_EQ(ReadFileToString(out / "image_describer.json"), ReadFileToString(matches_dir / "image_describer.json"));
+  EXPECT_EQ(ReadFileToString(out / "image_describer.json"),
+            ReadFileToString(matches_dir / "image_describer.json"));
 }
 
 }  // namespace
-}  // namespace sfm_pruning
+}  // namespace sfm_pruning::openmvg_features_test

@@ -1,39 +1,24 @@
 // OpenMVG match files (.txt / .bin), match-file discovery and pair lists: hand-made golden files,
 // exact and byte-exact round trips, bad input, and the real OpenMVG 2.1 Sceaux Castle matches.
+#include "sfm_pruning/io/openmvg_matches.hpp"
+
 #include <gtest/gtest.h>
 
 #include <algorithm>
 #include <random>
 #include <set>
 
+#include "openmvg_features_test_support.hpp"
 #include "sfm_pruning/io/openmvg_features.hpp"
-#include "sfm_pruning/io/openmvg_matches.hpp"
 #include "sfm_pruning/io/openmvg_sfm_data.hpp"
 #include "sfm_pruning/io/pair_list.hpp"
 #include "sfm_pruning/util/atomic_file.hpp"
 #include "sfm_pruning/util/error.hpp"
 #include "support/test_data.hpp"
 
-namespace sfm_pruning {
+namespace sfm_pruning::openmvg_features_test {
 namespace {
 namespace fs = std::filesystem;
-
-fs::path Golden(const std::string& name) { return testing::TestDataDir() / "openmvg_features" / name; }
-
-template <typename Call>
-std::string ErrorMessage(Call call) {
-  try {
-    call();
-  } catch (const Error& e) {
-    return e.what();
-  }
-  ADD_FAILURE() << "expected sfm_pruning::Error";
-  return {};
-}
-
-void WriteText(const fs::path& path, const std::string& text) {
-  WriteFileAtomically(path, false, [&](std::ostream& out) { out << text; });
-}
 
 // The content of the golden matches.txt / matches.bin.
 PairwiseMatches GoldenMatches() {
@@ -110,12 +95,9 @@ TEST(OpenMvgMatches, RejectsBadFiles) {
             std::string::npos);
   const fs::path dir = testing::ScratchDir("matches_bad");
   const std::vector<std::pair<std::string, std::string>> bad_texts = {
-      {"truncated.txt", "0 1\n3\n1 2\n3 4\n"},
-      {"letters.txt", "0 1\n1\n1 x\n"},
-      {"negative.txt", "0 1\n1\n-1 2\n"},
-      {"self.txt", "2 2\n1\n1 1\n"},
-      {"twice.txt", "0 1\n0\n1 0\n0\n"},
-      {"no_count.txt", "0 1\n"},
+      {"truncated.txt", "0 1\n3\n1 2\n3 4\n"}, {"letters.txt", "0 1\n1\n1 x\n"},
+      {"negative.txt", "0 1\n1\n-1 2\n"},      {"self.txt", "2 2\n1\n1 1\n"},
+      {"twice.txt", "0 1\n0\n1 0\n0\n"},       {"no_count.txt", "0 1\n"},
   };
   for (const auto& [name, text] : bad_texts) {
     WriteText(dir / name, text);
@@ -124,7 +106,8 @@ TEST(OpenMvgMatches, RejectsBadFiles) {
   }
   EXPECT_NE(ErrorMessage([&] { ReadOpenMvgMatches(dir / "letters.txt"); }).find("line 3"), std::string::npos);
 
-  WriteFileAtomically(dir / "flag.bin", true, [](std::ostream& out) { out << '\x07' << std::string(8, '\0'); });
+  WriteFileAtomically(dir / "flag.bin", true,
+                      [](std::ostream& out) { out << '\x07' << std::string(8, '\0'); });
   EXPECT_THROW(ReadOpenMvgMatches(dir / "flag.bin"), Error);
   std::string trailing = ReadFileToString(Golden("matches.bin")) + "x";
   WriteFileAtomically(dir / "trailing.bin", true, [&](std::ostream& out) { out << trailing; });
@@ -208,7 +191,8 @@ std::set<std::pair<IndexT, IndexT>> MatchSet(const std::vector<FeatureMatch>& ma
 
 TEST(OpenMvgMatches, ReadsAndRewritesTheRealSceauxCastleMatches) {
   PRUNESFM_REQUIRE_SHARED("formats/openmvg/sceaux_castle/matches", matches_dir);
-  const SfmData scene = ReadSfmData(matches_dir / "sfm_data.json", SfmDataParts::kViews | SfmDataParts::kIntrinsics);
+  const SfmData scene =
+      ReadSfmData(matches_dir / "sfm_data.json", SfmDataParts::kViews | SfmDataParts::kIntrinsics);
   const FeaturesPerView features = ReadOpenMvgFeatures(scene, matches_dir, false);
   MatchReadOptions options;
   options.sfm_data = &scene;
@@ -260,4 +244,4 @@ TEST(OpenMvgMatches, ReadsAndRewritesTheRealSceauxCastleMatches) {
 }
 
 }  // namespace
-}  // namespace sfm_pruning
+}  // namespace sfm_pruning::openmvg_features_test

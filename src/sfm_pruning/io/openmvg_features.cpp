@@ -2,11 +2,10 @@
 
 #include <cmath>
 #include <map>
+#include <nlohmann/json.hpp>
 #include <string_view>
 
-#include <nlohmann/json.hpp>
-
-#include "sfm_pruning/io/openmvg_binary_bytes.hpp"
+#include "sfm_pruning/io/colmap_binary.hpp"
 #include "sfm_pruning/io/openmvg_text_tokens.hpp"
 #include "sfm_pruning/util/atomic_file.hpp"
 #include "sfm_pruning/util/error.hpp"
@@ -52,12 +51,12 @@ std::vector<Keypoint> ReadFeatFile(const fs::path& path) {
     if (columns == 0) {
       columns = tokens.size();
       if (columns != kPointColumns && columns != kScaleOrientationColumns && columns != kAffineColumns) {
-        throw FileError(source, where + "expected 2, 4 or 8 numbers per feature, found " +
-                                    std::to_string(columns));
+        throw FileError(source,
+                        where + "expected 2, 4 or 8 numbers per feature, found " + std::to_string(columns));
       }
     } else if (tokens.size() != columns) {
-      throw FileError(source, where + "expected " + std::to_string(columns) + " numbers like the first line, found " +
-                                  std::to_string(tokens.size()));
+      throw FileError(source, where + "expected " + std::to_string(columns) +
+                                  " numbers like the first line, found " + std::to_string(tokens.size()));
     }
     values.resize(columns);
     for (size_t c = 0; c < columns; ++c) {
@@ -82,22 +81,25 @@ void WriteFeatFile(const fs::path& path, const std::vector<Keypoint>& keypoints)
 std::vector<Descriptor> ReadDescFile(const fs::path& path) {
   const std::string bytes = ReadFileToString(path);
   const std::string source = path.string();
-  openmvg_binary::ByteReader reader(bytes, source);
-  const uint64_t count = reader.Read<uint64_t>("descriptor count");
+  // Same fixed-width little-endian reading as COLMAP's binary files.
+  colmap_binary::Reader reader(bytes, source);
+  const auto count = reader.Read<uint64_t>();
   // Compare sizes before allocating, so a corrupt count cannot ask for terabytes.
-  if (reader.remaining() % kDescriptorSize != 0 || reader.remaining() / kDescriptorSize != count) {
-    throw FileError(source, "holds " + std::to_string(reader.remaining()) + " descriptor bytes for a count of " +
-                                std::to_string(count) + " (expected count x " + std::to_string(kDescriptorSize) +
+  const size_t descriptor_bytes = bytes.size() - sizeof(uint64_t);
+  if (descriptor_bytes % kDescriptorSize != 0 || descriptor_bytes / kDescriptorSize != count) {
+    throw FileError(source, "holds " + std::to_string(descriptor_bytes) +
+                                " descriptor bytes for a count of " + std::to_string(count) +
+                                " (expected count x " + std::to_string(kDescriptorSize) +
                                 " bytes of SIFT_Regions; truncated or another regions type?)");
   }
   std::vector<Descriptor> descriptors(count);
-  for (Descriptor& d : descriptors) reader.ReadBytes(d.data(), d.size(), "descriptor");
+  for (Descriptor& d : descriptors) d = reader.Read<Descriptor>();
   return descriptors;
 }
 
 void WriteDescFile(const fs::path& path, const std::vector<Descriptor>& descriptors) {
   WriteFileAtomically(path, true, [&](std::ostream& out) {
-    openmvg_binary::WriteRaw<uint64_t>(out, descriptors.size());
+    colmap_binary::Write<uint64_t>(out, descriptors.size());
     for (const Descriptor& d : descriptors) out.write(reinterpret_cast<const char*>(d.data()), d.size());
   });
 }
@@ -109,7 +111,8 @@ ImageDescriberInfo ReadImageDescriber(const fs::path& path) {
   // cereal writes the polymorphic name on the first object of each type, which both entries are.
   const auto polymorphic_name = [&](const char* key) {
     const auto entry = json.find(key);
-    if (entry == json.end() || !entry->is_object()) throw FileError(source, std::string("missing \"") + key + "\"");
+    if (entry == json.end() || !entry->is_object())
+      throw FileError(source, std::string("missing \"") + key + "\"");
     const auto name = entry->find("polymorphic_name");
     if (name == entry->end() || !name->is_string()) {
       throw FileError(source, std::string("\"") + key + "\" has no polymorphic_name");
@@ -121,8 +124,9 @@ ImageDescriberInfo ReadImageDescriber(const fs::path& path) {
 
 void RequireSiftRegions(const ImageDescriberInfo& info, const fs::path& path) {
   if (info.regions_type != kSiftRegionsType) {
-    throw FileError(path.string(), "regions type " + info.regions_type + " (from " + info.describer_name +
-                                       ") is not supported; PruneSfM reads SIFT_Regions (128-byte descriptors)");
+    throw FileError(path.string(),
+                    "regions type " + info.regions_type + " (from " + info.describer_name +
+                        ") is not supported; PruneSfM reads SIFT_Regions (128-byte descriptors)");
   }
 }
 
@@ -163,8 +167,8 @@ fs::path FeatureFilePath(const View& view, const fs::path& matches_dir, const st
   return matches_dir / name;
 }
 
-FeaturesPerView ReadOpenMvgFeatures(const SfmData& sfm_data, const fs::path& matches_dir, bool with_descriptors,
-                                    const ProgressCallback& progress) {
+FeaturesPerView ReadOpenMvgFeatures(const SfmData& sfm_data, const fs::path& matches_dir,
+                                    bool with_descriptors, const ProgressCallback& progress) {
   const fs::path describer_path = matches_dir / kImageDescriberFileName;
   if (with_descriptors && fs::exists(describer_path)) {
     RequireSiftRegions(ReadImageDescriber(describer_path), describer_path);
@@ -188,22 +192,23 @@ FeaturesPerView ReadOpenMvgFeatures(const SfmData& sfm_data, const fs::path& mat
   return features;
 }
 
-void WriteOpenMvgFeatures(const SfmData& sfm_data, const FeaturesPerView& features, const fs::path& matches_dir,
-                          const ProgressCallback& progress) {
+void WriteOpenMvgFeatures(const SfmData& sfm_data, const FeaturesPerView& features,
+                          const fs::path& matches_dir, const ProgressCallback& progress) {
   // Validate everything before the first write, so bad input leaves the directory untouched.
   std::map<fs::path, IndexT> view_of_feat_file;
   for (const auto& [view_id, view] : sfm_data.views) {
     const fs::path feat = FeatureFilePath(view, matches_dir, ".feat");
     const auto [it, inserted] = view_of_feat_file.emplace(feat, view_id);
     if (!inserted) {
-      throw FileError(feat.string(), "views " + std::to_string(it->second) + " and " + std::to_string(view_id) +
-                                         " have the same image basename; OpenMVG cannot tell their features apart");
+      throw FileError(feat.string(),
+                      "views " + std::to_string(it->second) + " and " + std::to_string(view_id) +
+                          " have the same image basename; OpenMVG cannot tell their features apart");
     }
   }
   for (const auto& [view_id, set] : features) {
     if (sfm_data.views.count(view_id) == 0) {
-      throw FileError(matches_dir.string(), "features given for view " + std::to_string(view_id) +
-                                                " which is not in the scene");
+      throw FileError(matches_dir.string(),
+                      "features given for view " + std::to_string(view_id) + " which is not in the scene");
     }
     if (!set.descriptors.empty() && set.descriptors.size() != set.keypoints.size()) {
       throw FileError(FeatureFilePath(sfm_data.views.at(view_id), matches_dir, ".desc").string(),

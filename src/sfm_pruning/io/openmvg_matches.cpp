@@ -3,13 +3,14 @@
 #include <algorithm>
 #include <array>
 #include <cstdint>
+#include <cstring>
 #include <limits>
 #include <string>
 #include <string_view>
 #include <utility>
 #include <vector>
 
-#include "sfm_pruning/io/openmvg_binary_bytes.hpp"
+#include "sfm_pruning/io/colmap_binary.hpp"
 #include "sfm_pruning/io/openmvg_text_tokens.hpp"
 #include "sfm_pruning/util/atomic_file.hpp"
 #include "sfm_pruning/util/error.hpp"
@@ -32,7 +33,9 @@ MatchFileFormat FormatFromExtension(const fs::path& path) {
 constexpr uint8_t kLittleEndianFlag = 1;
 constexpr uint8_t kBigEndianFlag = 0;
 
-std::string PairName(IndexT I, IndexT J) { return "pair (" + std::to_string(I) + ", " + std::to_string(J) + ")"; }
+std::string PairName(IndexT I, IndexT J) {
+  return "pair (" + std::to_string(I) + ", " + std::to_string(J) + ")";
+}
 
 // Collects the pairs of a file in the stored form (I < J) and applies the checks common to the
 // text and binary readers.
@@ -41,7 +44,7 @@ class MatchCollector {
   MatchCollector(std::string source, const MatchReadOptions& options, MatchReadReport* report)
       : source_(std::move(source)), options_(options), report_(report) {}
 
-  // `where` locates the pair in the file for error messages ("line 12", "offset 345").
+  // `where` locates the pair in the file for error messages ("line 12", "record 3").
   void Add(IndexT I, IndexT J, std::vector<FeatureMatch> pair_matches, const std::string& where) {
     if (I == J) throw FileError(source_, where + ": " + PairName(I, J) + " matches a view with itself");
     if (I > J) {
@@ -68,7 +71,8 @@ class MatchCollector {
   size_t FeatureCount(IndexT view, IndexT I, IndexT J, const std::string& where) const {
     const auto found = options_.features->find(view);
     if (found == options_.features->end()) {
-      throw FileError(source_, where + ": " + PairName(I, J) + ": view " + std::to_string(view) + " has no features");
+      throw FileError(source_,
+                      where + ": " + PairName(I, J) + ": view " + std::to_string(view) + " has no features");
     }
     return found->second.size();
   }
@@ -94,22 +98,24 @@ class MatchCollector {
   PairwiseMatches matches_;
 };
 
-PairwiseMatches ReadTextMatches(const fs::path& path, const MatchReadOptions& options, MatchReadReport* report) {
+PairwiseMatches ReadTextMatches(const fs::path& path, const MatchReadOptions& options,
+                                MatchReadReport* report) {
   const std::string text = ReadFileToString(path, false);
   const std::string source = path.string();
   MatchCollector collector(source, options, report);
   openmvg_text::TokenScanner scanner(text);
   std::string_view token;
-  std::string context = "the first pair";  // where we are, for errors; built once per pair
+  std::string context;  // the pair being read, for errors; built once per pair, not per match
   // Reads the next token as an unsigned number no larger than `max_value`.
   const auto next_number = [&](const char* what, uint64_t max_value) {
     if (!scanner.Next(&token)) {
-      throw FileError(source, std::string("truncated file: missing ") + what + " of " + context + " at the end");
+      throw FileError(source,
+                      std::string("truncated file: missing ") + what + " of " + context + " at the end");
     }
     uint64_t value = 0;
     if (!openmvg_text::ParseUInt64(token, &value) || value > max_value) {
-      throw FileError(source, "line " + std::to_string(scanner.line()) + ": expected " + what + " of " + context +
-                                  ", found '" + std::string(token) + "'");
+      throw FileError(source, "line " + std::to_string(scanner.line()) + ": expected " + what + " of " +
+                                  context + ", found '" + std::string(token) + "'");
     }
     return value;
   };
@@ -140,50 +146,68 @@ PairwiseMatches ReadTextMatches(const fs::path& path, const MatchReadOptions& op
   return collector.Take();
 }
 
-PairwiseMatches ReadBinaryMatches(const fs::path& path, const MatchReadOptions& options, MatchReadReport* report) {
+// Reads the integers of a cereal PortableBinary archive, swapping them when the archive was
+// written on a host of the other byte order (we run on little-endian hosts only).
+class PortableBinaryReader {
+ public:
+  PortableBinaryReader(const std::string& bytes, const std::string& source) : reader_(bytes, source) {
+    const auto flag = reader_.Read<uint8_t>();
+    if (flag != kLittleEndianFlag && flag != kBigEndianFlag) {
+      throw FileError(source,
+                      "not a cereal portable binary file (endianness flag " + std::to_string(flag) + ")");
+    }
+    swap_bytes_ = flag == kBigEndianFlag;
+  }
+
+  template <typename T>
+  T Read() {
+    T value = reader_.Read<T>();
+    if (swap_bytes_) {
+      unsigned char raw[sizeof(T)];
+      std::memcpy(raw, &value, sizeof(T));
+      std::reverse(raw, raw + sizeof(T));
+      std::memcpy(&value, raw, sizeof(T));
+    }
+    return value;
+  }
+
+  colmap_binary::Reader& bytes() { return reader_; }
+
+ private:
+  colmap_binary::Reader reader_;
+  bool swap_bytes_ = false;
+};
+
+PairwiseMatches ReadBinaryMatches(const fs::path& path, const MatchReadOptions& options,
+                                  MatchReadReport* report) {
   const std::string bytes = ReadFileToString(path);
   const std::string source = path.string();
-  openmvg_binary::ByteReader reader(bytes, source);
-  const auto flag = reader.Read<uint8_t>("endianness flag");
-  if (flag != kLittleEndianFlag && flag != kBigEndianFlag) {
-    throw FileError(source, "not a cereal portable binary file (endianness flag " + std::to_string(flag) + ")");
-  }
-  // We run on little-endian hosts only; a big-endian writer's integers need swapping.
-  reader.set_swap_bytes(flag == kBigEndianFlag);
+  PortableBinaryReader reader(bytes, source);
   MatchCollector collector(source, options, report);
-  const auto pair_count = reader.Read<uint64_t>("pair count");
+  const auto pair_count = reader.Read<uint64_t>();
   constexpr size_t kPairHeaderBytes = 2 * sizeof(uint32_t) + sizeof(uint64_t);
   constexpr size_t kMatchBytes = 2 * sizeof(uint32_t);
-  if (pair_count > reader.remaining() / kPairHeaderBytes) {
-    throw FileError(source, "truncated file: " + std::to_string(pair_count) + " pairs cannot fit in " +
-                                std::to_string(reader.remaining()) + " bytes");
-  }
+  reader.bytes().RequireRecords(pair_count, kPairHeaderBytes);
   for (uint64_t p = 0; p < pair_count; ++p) {
-    const std::string where = "offset " + std::to_string(reader.position());
-    const std::string pair_what = "pair " + std::to_string(p) + " of " + std::to_string(pair_count);
-    const auto I = reader.Read<uint32_t>(pair_what);
-    const auto J = reader.Read<uint32_t>(pair_what);
-    const auto count = reader.Read<uint64_t>("match count of " + PairName(I, J));
-    if (count > reader.remaining() / kMatchBytes) {
-      throw FileError(source, "truncated file: " + PairName(I, J) + " announces " + std::to_string(count) +
-                                  " matches but only " + std::to_string(reader.remaining()) + " bytes are left");
-    }
+    const auto I = reader.Read<uint32_t>();
+    const auto J = reader.Read<uint32_t>();
+    const auto count = reader.Read<uint64_t>();
+    reader.bytes().RequireRecords(count, kMatchBytes);
     std::vector<FeatureMatch> pair_matches(count);
     for (FeatureMatch& m : pair_matches) {
-      m.i = reader.Read<uint32_t>("match");
-      m.j = reader.Read<uint32_t>("match");
+      m.i = reader.Read<uint32_t>();
+      m.j = reader.Read<uint32_t>();
     }
-    collector.Add(I, J, std::move(pair_matches), where);
+    collector.Add(I, J, std::move(pair_matches), "record " + std::to_string(p));
   }
-  if (reader.remaining() != 0) {
-    throw FileError(source, std::to_string(reader.remaining()) + " unexpected bytes after the last pair");
-  }
+  if (!reader.bytes().AtEnd()) throw FileError(source, "unexpected bytes after the last pair");
   return collector.Take();
 }
 
 }  // namespace
 
-PairwiseMatches ReadOpenMvgMatches(const fs::path& path, const MatchReadOptions& options, MatchReadReport* report) {
+PairwiseMatches ReadOpenMvgMatches(const fs::path& path, const MatchReadOptions& options,
+                                   MatchReadReport* report) {
   if (report != nullptr) *report = {};
   return FormatFromExtension(path) == MatchFileFormat::kText ? ReadTextMatches(path, options, report)
                                                              : ReadBinaryMatches(path, options, report);
@@ -200,15 +224,15 @@ void WriteOpenMvgMatches(const fs::path& path, const PairwiseMatches& matches) {
     return;
   }
   WriteFileAtomically(path, true, [&](std::ostream& out) {
-    openmvg_binary::WriteRaw<uint8_t>(out, kLittleEndianFlag);
-    openmvg_binary::WriteRaw<uint64_t>(out, matches.size());
+    colmap_binary::Write<uint8_t>(out, kLittleEndianFlag);
+    colmap_binary::Write<uint64_t>(out, matches.size());
     for (const auto& [pair, pair_matches] : matches) {
-      openmvg_binary::WriteRaw<uint32_t>(out, pair.first);
-      openmvg_binary::WriteRaw<uint32_t>(out, pair.second);
-      openmvg_binary::WriteRaw<uint64_t>(out, pair_matches.size());
+      colmap_binary::Write<uint32_t>(out, pair.first);
+      colmap_binary::Write<uint32_t>(out, pair.second);
+      colmap_binary::Write<uint64_t>(out, pair_matches.size());
       for (const FeatureMatch& m : pair_matches) {
-        openmvg_binary::WriteRaw<uint32_t>(out, m.i);
-        openmvg_binary::WriteRaw<uint32_t>(out, m.j);
+        colmap_binary::Write<uint32_t>(out, m.i);
+        colmap_binary::Write<uint32_t>(out, m.j);
       }
     }
   });
@@ -219,9 +243,9 @@ fs::path FindOpenMvgMatchesFile(const fs::path& matches_dir, const fs::path& exp
     if (!fs::is_regular_file(explicit_file)) throw FileError(explicit_file.string(), "match file not found");
     return explicit_file;
   }
-  static const std::array<const char*, 6> kPreferredNames = {
-      "matches.e.bin", "matches.e.txt", "matches.f.bin", "matches.f.txt", "matches.putative.bin",
-      "matches.putative.txt"};
+  static const std::array<const char*, 6> kPreferredNames = {"matches.e.bin",        "matches.e.txt",
+                                                             "matches.f.bin",        "matches.f.txt",
+                                                             "matches.putative.bin", "matches.putative.txt"};
   for (const char* name : kPreferredNames) {
     const fs::path candidate = matches_dir / name;
     if (fs::is_regular_file(candidate)) return candidate;

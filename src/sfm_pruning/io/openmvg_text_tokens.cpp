@@ -48,8 +48,8 @@ bool ParseFloat(std::string_view token, float* value) { return ParseWhole(token,
 std::string FormatFloat(float value) {
   std::array<char, 64> buffer{};
   for (int precision = 6;; ++precision) {
-    const auto result =
-        std::to_chars(buffer.data(), buffer.data() + buffer.size(), value, std::chars_format::general, precision);
+    const auto result = std::to_chars(buffer.data(), buffer.data() + buffer.size(), value,
+                                      std::chars_format::general, precision);
     const std::string_view text(buffer.data(), static_cast<size_t>(result.ptr - buffer.data()));
     float back = 0.f;
     // Nine significant digits always round-trip a float; NaN never compares equal, so stop there.

@@ -26,8 +26,8 @@ PairSet ReadPairList(const fs::path& path, size_t num_views) {
         throw FileError(source, where + "'" + std::string(tokens[t]) + "' is not a view id");
       }
       if (ids[t] >= num_views) {
-        throw FileError(source, where + "view id " + std::to_string(ids[t]) + " is not below the number of views (" +
-                                    std::to_string(num_views) + ")");
+        throw FileError(source, where + "view id " + std::to_string(ids[t]) +
+                                    " is not below the number of views (" + std::to_string(num_views) + ")");
       }
     }
     for (size_t t = 1; t < ids.size(); ++t) {
