@@ -67,6 +67,7 @@ TEST(RelativePose, ComposeInvertsRelativePoseBetween) {
 TEST(Angles, RotationAngleAndVectorAngle) {
   EXPECT_NEAR(RotationAngleBetween(RotY(0.1), RotY(0.35)), 0.25, 1e-12);
   EXPECT_NEAR(RotationAngleBetween(RotY(0.0), RotY(M_PI)), M_PI, 1e-9);
+  EXPECT_NEAR(RotationAngleBetween(RotY(0.0), RotY(1e-9)), 1e-9, 1e-20);
   EXPECT_NEAR(AngleBetweenVectors({1, 0, 0}, {0, 2, 0}), M_PI / 2, 1e-15);
   EXPECT_NEAR(AngleBetweenVectors({1, 0, 0}, {-3, 0, 0}), M_PI, 1e-15);
   EXPECT_NEAR(AngleBetweenVectors({1, 1e-9, 0}, {1, 0, 0}), 1e-9, 1e-20);
