@@ -252,39 +252,36 @@ TEST(OpenMvgSfmDataJson, ErrorsNameTheFileAndTheProblem) {
   const std::string golden = ReadFileToString(GoldenFile("all_types.json"));
   EXPECT_NE(ReadError(golden.substr(0, 1000)).find("at byte 1000"), std::string::npos);
 
-  // Each case damages the golden file in one place.
-  const auto error_after_replacing = [&](const std::string& from, const std::string& to) {
-    std::string text = golden;
-    const size_t at = text.find(from);
-    EXPECT_NE(at, std::string::npos) << from;
-    return at == std::string::npos ? std::string() : ReadError(text.replace(at, from.size(), to));
+  // Each case damages the golden file in one place: {text to find, replacement, expected message}.
+  const std::string observation_7 =
+      ",\n                        \"value\": {\n                            \"id_feat\": 42";
+  const struct {
+    std::string from, to, message;
+  } cases[] = {
+      {"\"width\": 1920,", "\"width\": 1920.0,",
+       "bad.json: views[3].value.ptr_wrapper.data.width: expected unsigned integer"},
+      {"\"polymorphic_name\": \"fisheye\"", "\"polymorphic_name\": \"fancy_cam\"",
+       "bad.json: intrinsics[4].value: unknown camera model \"fancy_cam\""},
+      {"\"focal_length\": 2760.0,", "",
+       "bad.json: intrinsics[0].value.ptr_wrapper.data: missing field \"focal_length\""},
+      {"-0.125", "-0.125, 3.0",
+       "bad.json: intrinsics[1].value.ptr_wrapper.data.disto_k1: expected 1 numbers, got 2"},
+      {"\"key\": 7" + observation_7, "\"key\": 70" + observation_7,
+       "bad.json: landmark 5 is observed in view 70, which does not exist"},
+      {"\"id_pose\": 7", "\"id_pose\": 8", "bad.json: pose 7 is used by no view"},
+      {"\"polymorphic_id\": 4,", "\"polymorphic_id\": 9,",
+       "bad.json: intrinsics[6].value.polymorphic_id: polymorphic id 9 names no earlier type"},
+      {"\"id\": 2147483650,", "\"id\": 5,",
+       "bad.json: views[1].value.ptr_wrapper.id: pointer id 5 refers to no earlier object"},
   };
-  EXPECT_NE(error_after_replacing("\"width\": 1920,", "\"width\": 1920.0,")
-                .find("bad.json: views[3].value.ptr_wrapper.data.width: expected unsigned integer"),
-            std::string::npos);
-  EXPECT_NE(error_after_replacing("\"polymorphic_name\": \"fisheye\"", "\"polymorphic_name\": \"fancy_cam\"")
-                .find("intrinsics[4].value: unknown camera model \"fancy_cam\""),
-            std::string::npos);
-  EXPECT_NE(error_after_replacing("\"focal_length\": 2760.0,", "")
-                .find("intrinsics[0].value.ptr_wrapper.data: missing field \"focal_length\""),
-            std::string::npos);
-  EXPECT_NE(error_after_replacing("-0.125", "-0.125, 3.0")
-                .find("intrinsics[1].value.ptr_wrapper.data.disto_k1: expected 1 numbers, got 2"),
-            std::string::npos);
-  EXPECT_NE(
-      error_after_replacing(
-          "\"key\": 7,\n                        \"value\": {\n                            \"id_feat\": 42",
-          "\"key\": 70,\n                        \"value\": {\n                            \"id_feat\": 42")
-          .find("bad.json: landmark 5 is observed in view 70, which does not exist"),
-      std::string::npos);
-  EXPECT_NE(error_after_replacing("\"id_pose\": 7", "\"id_pose\": 8").find("pose 7 is used by no view"),
-            std::string::npos);
-  EXPECT_NE(error_after_replacing("\"polymorphic_id\": 4,", "\"polymorphic_id\": 9,")
-                .find("intrinsics[6].value.polymorphic_id: polymorphic id 9 names no earlier type"),
-            std::string::npos);
-  EXPECT_NE(error_after_replacing("\"id\": 2147483650,", "\"id\": 5,")
-                .find("views[1].value.ptr_wrapper.id: pointer id 5 refers to no earlier object"),
-            std::string::npos);
+  for (const auto& c : cases) {
+    std::string text = golden;
+    const size_t at = text.find(c.from);
+    ASSERT_NE(at, std::string::npos) << c.from;
+    const std::string error = ReadError(text.replace(at, c.from.size(), c.to));
+    EXPECT_NE(error.find(c.message), std::string::npos) << error;
+    EXPECT_EQ(error.find('\n'), std::string::npos) << error;  // one line
+  }
   EXPECT_NE(ReadError("{\"root_path\": \"\"}").find("missing field \"sfm_data_version\""), std::string::npos);
   EXPECT_NE(ReadError("[1, 2]").find("expected a JSON object"), std::string::npos);
   EXPECT_NE(ReadError("{}", "scene.xml").find("unsupported sfm_data extension"), std::string::npos);
