@@ -1,5 +1,7 @@
 // Interoperability with the real COLMAP 3.8 binary: it must read the models we write, we must
 // read what it writes, and we must read a database it builds from features we give it.
+#include <gtest/gtest.h>
+
 #include <algorithm>
 #include <cmath>
 #include <cstdlib>
@@ -7,8 +9,6 @@
 #include <iomanip>
 #include <string>
 #include <vector>
-
-#include <gtest/gtest.h>
 
 #include "sfm_pruning/io/colmap_camera.hpp"
 #include "sfm_pruning/io/colmap_database.hpp"
@@ -21,8 +21,8 @@ namespace fs = std::filesystem;
 
 const fs::path kColmap = "/usr/bin/colmap";
 
-#define REQUIRE_COLMAP()                                                      \
-  if (!fs::exists(kColmap)) {                                                 \
+#define REQUIRE_COLMAP()                                                          \
+  if (!fs::exists(kColmap)) {                                                     \
     GTEST_SKIP() << "COLMAP not installed at " << kColmap << "; interop skipped"; \
   }
 
@@ -138,7 +138,8 @@ void WritePgm(const fs::path& path, int width, int height) {
 
 Descriptor MakeDescriptor(IndexT feature) {
   Descriptor descriptor;
-  for (int d = 0; d < kDescriptorSize; ++d) descriptor[d] = static_cast<uint8_t>((feature * 7 + d * 13) % 256);
+  for (int d = 0; d < kDescriptorSize; ++d)
+    descriptor[d] = static_cast<uint8_t>((feature * 7 + d * 13) % 256);
   return descriptor;
 }
 
@@ -173,8 +174,8 @@ TEST(ColmapInterop, WeReadTheDatabaseColmapBuildsFromOurFeatures) {
   const std::string db = (dir / "database.db").string();
   ASSERT_EQ(RunColmap("database_creator --database_path " + db, dir / "creator.log"), 0)
       << ReadLog(dir / "creator.log");
-  ASSERT_EQ(RunColmap("feature_importer --database_path " + db + " --image_path " + (dir / "images").string() +
-                          " --import_path " + (dir / "features").string() +
+  ASSERT_EQ(RunColmap("feature_importer --database_path " + db + " --image_path " +
+                          (dir / "images").string() + " --import_path " + (dir / "features").string() +
                           " --ImageReader.single_camera 1 --ImageReader.camera_model SIMPLE_PINHOLE"
                           " --ImageReader.camera_params 500,320,240",
                       dir / "importer.log"),
@@ -225,8 +226,8 @@ TEST(ColmapInterop, WeReadTheDatabaseColmapBuildsFromOurFeatures) {
     const RelativePose truth = RelativePoseBetween(scene.poses.at(view_of_image.at(pair.first)),
                                                    scene.poses.at(view_of_image.at(pair.second)));
     Eigen::Matrix3d t_cross;
-    t_cross << 0, -truth.translation.z(), truth.translation.y(), truth.translation.z(), 0, -truth.translation.x(),
-        -truth.translation.y(), truth.translation.x(), 0;
+    t_cross << 0, -truth.translation.z(), truth.translation.y(), truth.translation.z(), 0,
+        -truth.translation.x(), -truth.translation.y(), truth.translation.x(), 0;
     const Eigen::Matrix3d expected = (t_cross * truth.rotation).normalized();
     const Eigen::Matrix3d actual = geometry.E.normalized();
     EXPECT_LT(std::min((actual - expected).norm(), (actual + expected).norm()), 1e-4);

@@ -1,12 +1,13 @@
 // COLMAP camera conversion, checked by projecting the same camera-frame points through COLMAP's
 // own formulas (written here from the model definitions) and through our CameraIntrinsics.
+#include "sfm_pruning/io/colmap_camera.hpp"
+
+#include <gtest/gtest.h>
+
 #include <cmath>
 #include <string>
 #include <vector>
 
-#include <gtest/gtest.h>
-
-#include "sfm_pruning/io/colmap_camera.hpp"
 #include "sfm_pruning/util/error.hpp"
 
 namespace sfm_pruning {
@@ -32,8 +33,8 @@ Eigen::Vector2d ColmapProject(const ColmapCamera& camera, const Eigen::Vector3d&
       xd = x * radial, yd = y * radial;
       break;
     }
-    case 4:     // OPENCV fx fy cx cy k1 k2 p1 p2
-    case 6: {   // FULL_OPENCV fx fy cx cy k1 k2 p1 p2 k3 k4 k5 k6
+    case 4:    // OPENCV fx fy cx cy k1 k2 p1 p2
+    case 6: {  // FULL_OPENCV fx fy cx cy k1 k2 p1 p2 k3 k4 k5 k6
       fy = p[1], cx = p[2], cy = p[3];
       const double k1 = p[4], k2 = p[5], p1 = p[6], p2 = p[7];
       double radial = 1 + k1 * r2 + k2 * r2 * r2;
@@ -49,7 +50,8 @@ Eigen::Vector2d ColmapProject(const ColmapCamera& camera, const Eigen::Vector3d&
       const double r = std::sqrt(r2);
       const double theta = std::atan(r);
       const double t2 = theta * theta;
-      const double theta_d = theta * (1 + p[4] * t2 + p[5] * t2 * t2 + p[6] * t2 * t2 * t2 + p[7] * t2 * t2 * t2 * t2);
+      const double theta_d =
+          theta * (1 + p[4] * t2 + p[5] * t2 * t2 + p[6] * t2 * t2 * t2 + p[7] * t2 * t2 * t2 * t2);
       xd = x * theta_d / r, yd = y * theta_d / r;
       break;
     }
@@ -76,7 +78,9 @@ void ExpectSameProjection(const ColmapCamera& colmap, const CameraIntrinsics& ou
   }
 }
 
-ColmapCamera Camera(int model_id, std::vector<double> params) { return {model_id, 640, 480, std::move(params)}; }
+ColmapCamera Camera(int model_id, std::vector<double> params) {
+  return {model_id, 640, 480, std::move(params)};
+}
 
 struct MappingCase {
   ColmapCamera colmap;
@@ -124,11 +128,14 @@ TEST(ColmapCamera, PrincipalPointShiftsByHalfAPixel) {
 
 TEST(ColmapCamera, OurModelsMapToColmapAndBack) {
   // Radial K3 with k3 != 0 needs FULL_OPENCV, which reads back as Brown with zero tangential terms.
-  const CameraIntrinsics radial_k3(CameraModel::kPinholeRadialK3, 640, 480, {800, 319.5, 239.5, -0.1, 0.03, -0.004});
-  const CameraIntrinsics brown(CameraModel::kPinholeBrownT2, 640, 480, {800, 319.5, 239.5, -0.1, 0.03, -0.004, 0, 0});
+  const CameraIntrinsics radial_k3(CameraModel::kPinholeRadialK3, 640, 480,
+                                   {800, 319.5, 239.5, -0.1, 0.03, -0.004});
+  const CameraIntrinsics brown(CameraModel::kPinholeBrownT2, 640, 480,
+                               {800, 319.5, 239.5, -0.1, 0.03, -0.004, 0, 0});
   const CameraIntrinsics brown_k3_zero(CameraModel::kPinholeBrownT2, 640, 480,
                                        {800, 319.5, 239.5, -0.1, 0.03, 0, 0.002, 0.001});
-  const CameraIntrinsics fisheye(CameraModel::kFisheye, 640, 480, {600, 319.5, 239.5, 0.01, 0.002, -0.003, 0.0004});
+  const CameraIntrinsics fisheye(CameraModel::kFisheye, 640, 480,
+                                 {600, 319.5, 239.5, 0.01, 0.002, -0.003, 0.0004});
   const std::vector<std::pair<CameraIntrinsics, CameraIntrinsics>> cases = {
       {radial_k3, brown}, {brown, brown}, {brown_k3_zero, brown_k3_zero}, {fisheye, fisheye}};
   for (const auto& [intrinsics, expected] : cases) {
@@ -136,7 +143,8 @@ TEST(ColmapCamera, OurModelsMapToColmapAndBack) {
     ExpectSameProjection(colmap, intrinsics);
     const CameraIntrinsics back = FromColmapCamera(colmap, "cameras.bin");
     ASSERT_EQ(back.model(), expected.model());
-    for (size_t k = 0; k < back.params().size(); ++k) EXPECT_DOUBLE_EQ(back.params()[k], expected.params()[k]);
+    for (size_t k = 0; k < back.params().size(); ++k)
+      EXPECT_DOUBLE_EQ(back.params()[k], expected.params()[k]);
   }
 }
 

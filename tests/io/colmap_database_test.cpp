@@ -1,5 +1,8 @@
 // COLMAP databases: the real temple databases of COLMAP 3.8 and 4.1.1, write/read round trips,
 // the pair filter and error handling.
+#include "sfm_pruning/io/colmap_database.hpp"
+
+#include <gtest/gtest.h>
 #include <sqlite3.h>
 
 #include <algorithm>
@@ -7,10 +10,7 @@
 #include <set>
 #include <string>
 
-#include <gtest/gtest.h>
-
 #include "sfm_pruning/io/colmap_camera.hpp"
-#include "sfm_pruning/io/colmap_database.hpp"
 #include "sfm_pruning/util/error.hpp"
 #include "support/test_data.hpp"
 
@@ -60,8 +60,8 @@ double MedianEpipolarDistance(const ColmapDatabase& db, const ViewPair& pair, co
 }
 
 TEST(ColmapDatabase, ReadsRealDatabasesOfBothSchemas) {
-  for (const RealDatabase& real : {RealDatabase{"colmap-3.8", 46, 7893, 35, 7510},
-                                   RealDatabase{"colmap-4.1.1", 43, 7723, 36, 7436}}) {
+  for (const RealDatabase& real :
+       {RealDatabase{"colmap-3.8", 46, 7893, 35, 7510}, RealDatabase{"colmap-4.1.1", 43, 7723, 36, 7436}}) {
     SCOPED_TRACE(real.folder);
     PRUNESFM_REQUIRE_SHARED(std::string("formats/colmap/") + real.folder + "/database.db", path);
     const ColmapDatabase db = ReadColmapDatabase(path);
@@ -211,7 +211,8 @@ TEST(ColmapDatabase, RejectsBadFiles) {
   ExpectReadError(dir / "missing.db", "file not found");
   std::ofstream(dir / "text.db") << "this is not a database, just text long enough to fill a header......\n";
   ExpectReadError(dir / "text.db", "file is not a database");
-  ExecuteSql(dir / "other.db", "CREATE TABLE cameras (camera_id INTEGER); CREATE TABLE images (image_id INTEGER);");
+  ExecuteSql(dir / "other.db",
+             "CREATE TABLE cameras (camera_id INTEGER); CREATE TABLE images (image_id INTEGER);");
   ExpectReadError(dir / "other.db", "not a COLMAP database: table 'keypoints' is missing");
 
   ColmapDatabase small;
@@ -230,7 +231,9 @@ TEST(ColmapDatabase, RejectsBadFiles) {
 
   ExecuteSql(path, "UPDATE keypoints SET rows = 3 WHERE image_id = 1");
   ExpectReadError(path, "keypoints of image 1 blob has 32 bytes, expected 48");
-  ExecuteSql(path, "UPDATE keypoints SET rows = 2 WHERE image_id = 1; UPDATE matches SET data = x'0500000000000000'");
+  ExecuteSql(
+      path,
+      "UPDATE keypoints SET rows = 2 WHERE image_id = 1; UPDATE matches SET data = x'0500000000000000'");
   ExpectReadError(path, "reference a keypoint that does not exist");
   ExecuteSql(path, "UPDATE cameras SET model = 7, params = x'00'");
   ExpectReadError(path, "camera 1 params blob has 1 bytes, expected 40");

@@ -1,12 +1,13 @@
 // COLMAP sparse models: the real temple models written by COLMAP 3.8 and 4.1.1, round trips,
 // the points2D / id_feat mapping and error handling.
+#include "sfm_pruning/io/colmap_model.hpp"
+
+#include <gtest/gtest.h>
+
 #include <cmath>
 #include <fstream>
 #include <string>
 
-#include <gtest/gtest.h>
-
-#include "sfm_pruning/io/colmap_model.hpp"
 #include "sfm_pruning/util/error.hpp"
 #include "support/test_data.hpp"
 
@@ -48,7 +49,8 @@ Eigen::Vector2d MeanResidual(const SfmData& data, double* rms) {
   for (const auto& [id, landmark] : data.structure) {
     for (const auto& [view_id, observation] : landmark.observations) {
       const View& view = data.views.at(view_id);
-      const Eigen::Vector2d projected = data.IntrinsicsOf(view).Project(data.PoseOf(view).ToCamera(landmark.X));
+      const Eigen::Vector2d projected =
+          data.IntrinsicsOf(view).Project(data.PoseOf(view).ToCamera(landmark.X));
       sum += observation.x - projected;
       squared += (observation.x - projected).squaredNorm();
       ++count;
@@ -128,7 +130,8 @@ TEST(ColmapModel, RoundTripsAreExact) {
 // Three views (one without a pose), two landmarks, features for the posed views.
 SfmData SmallScene(FeaturesPerView* features) {
   SfmData data;
-  data.intrinsics[0] = CameraIntrinsics(CameraModel::kPinholeRadialK1, 400, 300, {350.25, 199.5, 149.5, -0.05});
+  data.intrinsics[0] =
+      CameraIntrinsics(CameraModel::kPinholeRadialK1, 400, 300, {350.25, 199.5, 149.5, -0.05});
   for (IndexT id : {0u, 1u, 2u}) {
     View view;
     view.id_view = id;

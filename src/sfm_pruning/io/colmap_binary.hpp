@@ -65,6 +65,8 @@ void Write(std::ostream& out, T value) {
   out.write(reinterpret_cast<const char*>(&value), sizeof(T));
 }
 
-inline void WriteString(std::ostream& out, const std::string& value) { out.write(value.c_str(), value.size() + 1); }
+inline void WriteString(std::ostream& out, const std::string& value) {
+  out.write(value.c_str(), value.size() + 1);
+}
 
 }  // namespace sfm_pruning::colmap_binary

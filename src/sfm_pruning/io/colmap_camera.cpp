@@ -16,12 +16,18 @@ struct ColmapModelInfo {
 // Every model COLMAP defines, so that unsupported ones are still named in error messages and
 // their cameras.bin records can be sized.
 constexpr ColmapModelInfo kColmapModels[] = {
-    {0, "SIMPLE_PINHOLE", 3},       {1, "PINHOLE", 4},
-    {2, "SIMPLE_RADIAL", 4},        {3, "RADIAL", 5},
-    {4, "OPENCV", 8},               {5, "OPENCV_FISHEYE", 8},
-    {6, "FULL_OPENCV", 12},         {7, "FOV", 5},
-    {8, "SIMPLE_RADIAL_FISHEYE", 4}, {9, "RADIAL_FISHEYE", 5},
-    {10, "THIN_PRISM_FISHEYE", 12}, {11, "RAD_TAN_THIN_PRISM_FISHEYE", 16},
+    {0, "SIMPLE_PINHOLE", 3},
+    {1, "PINHOLE", 4},
+    {2, "SIMPLE_RADIAL", 4},
+    {3, "RADIAL", 5},
+    {4, "OPENCV", 8},
+    {5, "OPENCV_FISHEYE", 8},
+    {6, "FULL_OPENCV", 12},
+    {7, "FOV", 5},
+    {8, "SIMPLE_RADIAL_FISHEYE", 4},
+    {9, "RADIAL_FISHEYE", 5},
+    {10, "THIN_PRISM_FISHEYE", 12},
+    {11, "RAD_TAN_THIN_PRISM_FISHEYE", 16},
 };
 
 const ColmapModelInfo* FindModel(int id) {
@@ -80,8 +86,9 @@ CameraIntrinsics FromColmapCamera(const ColmapCamera& camera, const std::string&
   // Our distorted models share one focal length; COLMAP's two-focal ones only map when fx == fy.
   auto require_single_focal = [&]() {
     if (p[0] != p[1]) {
-      throw FileError(source, "camera model " + name +
-                                  " with fx != fy is not supported (PruneSfM's distorted models have one focal)");
+      throw FileError(source,
+                      "camera model " + name +
+                          " with fx != fy is not supported (PruneSfM's distorted models have one focal)");
     }
   };
   switch (camera.model_id) {

@@ -8,11 +8,10 @@
 // distortion coefficients act on normalized coordinates and are unchanged.
 #pragma once
 
+#include <Eigen/Core>
 #include <cstdint>
 #include <string>
 #include <vector>
-
-#include <Eigen/Core>
 
 #include "sfm_pruning/sfm/camera_intrinsics.hpp"
 

@@ -7,13 +7,12 @@
 // of ViewPair::first.
 #pragma once
 
+#include <Eigen/Core>
 #include <filesystem>
 #include <map>
 #include <optional>
 #include <set>
 #include <vector>
-
-#include <Eigen/Core>
 
 #include "sfm_pruning/sfm/features.hpp"
 #include "sfm_pruning/sfm/matches.hpp"

@@ -2,12 +2,11 @@
 // stored as raw little-endian bytes, and 3x3 matrices stored row-major.
 #pragma once
 
+#include <Eigen/Core>
 #include <cstring>
 #include <string>
 #include <type_traits>
 #include <vector>
-
-#include <Eigen/Core>
 
 #include "sfm_pruning/util/error.hpp"
 
@@ -34,7 +33,8 @@ std::string EncodeArray(const std::vector<T>& values) {
 }
 
 // COLMAP writes its (column-major) Eigen matrices transposed, i.e. the blob is row-major.
-inline Eigen::Matrix3d DecodeMatrix3(const std::string& blob, const std::string& source, const std::string& what) {
+inline Eigen::Matrix3d DecodeMatrix3(const std::string& blob, const std::string& source,
+                                     const std::string& what) {
   if (blob.empty()) return Eigen::Matrix3d::Zero();
   const std::vector<double> values = DecodeArray<double>(blob, 9, source, what);
   return Eigen::Map<const Eigen::Matrix<double, 3, 3, Eigen::RowMajor>>(values.data());

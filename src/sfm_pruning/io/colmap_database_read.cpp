@@ -1,10 +1,9 @@
 // Reading COLMAP's database.db, both the 3.x and the 4.x schema: only columns common to both
 // are selected by name, so the extra 4.x tables and the 4.x `type` column of descriptors never
 // matter.
+#include <Eigen/Geometry>
 #include <cmath>
 #include <string>
-
-#include <Eigen/Geometry>
 
 #include "sfm_pruning/io/colmap_camera.hpp"
 #include "sfm_pruning/io/colmap_database.hpp"
@@ -23,7 +22,8 @@ namespace {
 constexpr uint64_t kMaxNumImages = 2147483647;  // COLMAP's pair id multiplier
 
 void ReadCameras(Connection& db, ColmapDatabase* out) {
-  Statement rows = db.Prepare("SELECT camera_id, model, width, height, params FROM cameras ORDER BY camera_id");
+  Statement rows =
+      db.Prepare("SELECT camera_id, model, width, height, params FROM cameras ORDER BY camera_id");
   while (rows.Step()) {
     const auto camera_id = static_cast<IndexT>(rows.ColumnInt64(0));
     ColmapCamera camera;
@@ -113,8 +113,8 @@ void ReadDescriptors(Connection& db, ColmapDatabase* out) {
     if (num == 0) continue;
     const std::string what = "descriptors of image " + std::to_string(image_id);
     if (rows.ColumnInt64(2) != kDescriptorSize) {
-      throw FileError(db.source(), what + " have " + std::to_string(rows.ColumnInt64(2)) + " columns, expected " +
-                                       std::to_string(kDescriptorSize));
+      throw FileError(db.source(), what + " have " + std::to_string(rows.ColumnInt64(2)) +
+                                       " columns, expected " + std::to_string(kDescriptorSize));
     }
     FeatureSet& features = out->features[image_id];
     if (num < 0 || static_cast<size_t>(num) != features.size()) {
@@ -128,11 +128,13 @@ void ReadDescriptors(Connection& db, ColmapDatabase* out) {
 }
 
 // Decodes an N x 2 uint32 match blob and checks the indices against both images' keypoints.
-std::vector<FeatureMatch> DecodeMatches(const Connection& db, const ColmapDatabase& out, const Statement& rows,
-                                        const ViewPair& pair, const std::string& what) {
+std::vector<FeatureMatch> DecodeMatches(const Connection& db, const ColmapDatabase& out,
+                                        const Statement& rows, const ViewPair& pair,
+                                        const std::string& what) {
   const int64_t num = rows.ColumnInt64(1);
   if (num < 0 || rows.ColumnInt64(2) != 2) {
-    throw FileError(db.source(), what + " have " + std::to_string(rows.ColumnInt64(2)) + " columns, expected 2");
+    throw FileError(db.source(),
+                    what + " have " + std::to_string(rows.ColumnInt64(2)) + " columns, expected 2");
   }
   const std::vector<uint32_t> values =
       DecodeArray<uint32_t>(rows.ColumnBlob(3), static_cast<size_t>(2 * num), db.source(), what);
@@ -165,7 +167,8 @@ std::string PairName(const char* what, const ViewPair& pair) {
 }
 
 void ReadMatches(Connection& db, ColmapDatabase* out) {
-  Statement rows = db.Prepare("SELECT pair_id, rows, cols, data FROM matches WHERE rows > 0 ORDER BY pair_id");
+  Statement rows =
+      db.Prepare("SELECT pair_id, rows, cols, data FROM matches WHERE rows > 0 ORDER BY pair_id");
   while (rows.Step()) {
     const ViewPair pair = RequirePair(db, *out, rows.ColumnInt64(0), "matches");
     out->putative[pair] = DecodeMatches(db, *out, rows, pair, PairName("matches", pair));
@@ -184,7 +187,8 @@ std::optional<RelativePose> DecodeRelativePose(const Connection& db, const std::
 }
 
 void ReadTwoViewGeometries(Connection& db, ColmapDatabase* out) {
-  const bool has_pose = db.HasColumn("two_view_geometries", "qvec") && db.HasColumn("two_view_geometries", "tvec");
+  const bool has_pose =
+      db.HasColumn("two_view_geometries", "qvec") && db.HasColumn("two_view_geometries", "tvec");
   Statement rows = db.Prepare(std::string("SELECT pair_id, rows, cols, data, config, F, E, H") +
                               (has_pose ? ", qvec, tvec" : "") +
                               " FROM two_view_geometries WHERE rows > 0 ORDER BY pair_id");
@@ -197,7 +201,8 @@ void ReadTwoViewGeometries(Connection& db, ColmapDatabase* out) {
     geometry.F = colmap_blobs::DecodeMatrix3(rows.ColumnBlob(5), db.source(), what + " F");
     geometry.E = colmap_blobs::DecodeMatrix3(rows.ColumnBlob(6), db.source(), what + " E");
     geometry.H = colmap_blobs::DecodeMatrix3(rows.ColumnBlob(7), db.source(), what + " H");
-    if (has_pose) geometry.relative_pose = DecodeRelativePose(db, rows.ColumnBlob(8), rows.ColumnBlob(9), what);
+    if (has_pose)
+      geometry.relative_pose = DecodeRelativePose(db, rows.ColumnBlob(8), rows.ColumnBlob(9), what);
     out->verified[pair] = std::move(geometry);
   }
 }

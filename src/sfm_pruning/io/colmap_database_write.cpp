@@ -1,9 +1,8 @@
 // Writing COLMAP databases: a new one in COLMAP 3.8's schema, and a copy with a subset of the
 // two-view geometries. Both are built in memory and written with WriteFileAtomically, so no
 // reader ever sees a half-written database.
-#include <string>
-
 #include <Eigen/Geometry>
+#include <string>
 
 #include "sfm_pruning/io/colmap_camera.hpp"
 #include "sfm_pruning/io/colmap_database.hpp"
@@ -48,7 +47,8 @@ void BindBlob(Statement& statement, int index, const std::string& bytes) {
 
 void WriteCamerasAndImages(const SfmData& data, const std::string& source, Connection& db) {
   Statement camera_row = db.Prepare(
-      "INSERT INTO cameras (camera_id, model, width, height, params, prior_focal_length) VALUES (?, ?, ?, ?, ?, 1)");
+      "INSERT INTO cameras (camera_id, model, width, height, params, prior_focal_length) VALUES (?, ?, ?, ?, "
+      "?, 1)");
   for (const auto& [intrinsic_id, intrinsics] : data.intrinsics) {
     ColmapCamera camera;
     try {
@@ -79,7 +79,8 @@ void WriteCamerasAndImages(const SfmData& data, const std::string& source, Conne
 }
 
 void WriteFeatures(const ColmapDatabase& database, const std::string& source, Connection& db) {
-  Statement keypoint_row = db.Prepare("INSERT INTO keypoints (image_id, rows, cols, data) VALUES (?, ?, 4, ?)");
+  Statement keypoint_row =
+      db.Prepare("INSERT INTO keypoints (image_id, rows, cols, data) VALUES (?, ?, 4, ?)");
   Statement descriptor_row =
       db.Prepare("INSERT INTO descriptors (image_id, rows, cols, data) VALUES (?, ?, 128, ?)");
   for (const auto& [view_id, features] : database.features) {
@@ -161,7 +162,9 @@ void WriteMatches(const ColmapDatabase& database, const std::string& source, Con
 }
 
 void WriteBytes(const fs::path& path, const std::string& bytes) {
-  WriteFileAtomically(path, true, [&](std::ostream& out) { out.write(bytes.data(), static_cast<std::streamsize>(bytes.size())); });
+  WriteFileAtomically(path, true, [&](std::ostream& out) {
+    out.write(bytes.data(), static_cast<std::streamsize>(bytes.size()));
+  });
 }
 
 }  // namespace
@@ -183,7 +186,8 @@ void WriteColmapDatabase(const ColmapDatabase& database, const fs::path& path) {
   WriteBytes(path, db.Serialize());
 }
 
-void CopyColmapDatabaseKeepingPairs(const fs::path& input, const fs::path& output, const std::set<ViewPair>& keep) {
+void CopyColmapDatabaseKeepingPairs(const fs::path& input, const fs::path& output,
+                                    const std::set<ViewPair>& keep) {
   Connection db = Connection::InMemoryCopyOf(input.string());
   colmap_sqlite::RequireColmapTables(db);
   std::vector<int64_t> dropped;

@@ -1,9 +1,8 @@
 #include "sfm_pruning/io/colmap_model.hpp"
 
+#include <Eigen/Geometry>
 #include <string>
 #include <utility>
-
-#include <Eigen/Geometry>
 
 #include "sfm_pruning/io/colmap_camera.hpp"
 #include "sfm_pruning/io/colmap_model_records.hpp"
@@ -60,7 +59,8 @@ SfmData ToSfmData(const Model& model, const fs::path& dir, bool binary) {
   }
   for (const auto& [point_id, point] : model.points3d) {
     if (point_id >= kUndefinedIndex) {
-      throw FileError(points_file, "point3D id " + std::to_string(point_id) + " exceeds PruneSfM's 32-bit ids");
+      throw FileError(points_file,
+                      "point3D id " + std::to_string(point_id) + " exceeds PruneSfM's 32-bit ids");
     }
     Landmark landmark;
     landmark.X = point.xyz;
@@ -70,7 +70,8 @@ SfmData ToSfmData(const Model& model, const fs::path& dir, bool binary) {
       const auto image = model.images.find(image_id);
       if (image == model.images.end() || point2d_idx >= image->second.points2d.size()) {
         throw FileError(points_file, "point3D " + std::to_string(point_id) + " observes missing point2D " +
-                                         std::to_string(point2d_idx) + " of image " + std::to_string(image_id));
+                                         std::to_string(point2d_idx) + " of image " +
+                                         std::to_string(image_id));
       }
       // A track lists an image once; should it repeat one, the first observation is kept.
       landmark.observations.emplace(
@@ -82,8 +83,9 @@ SfmData ToSfmData(const Model& model, const fs::path& dir, bool binary) {
 }
 
 // Fills the points2D of every written image; returns, per (view, landmark), the point2D index.
-std::map<std::pair<IndexT, IndexT>, uint32_t> FillPoints2D(const SfmData& data, const FeaturesPerView* features,
-                                                          const fs::path& dir, Model* model) {
+std::map<std::pair<IndexT, IndexT>, uint32_t> FillPoints2D(const SfmData& data,
+                                                           const FeaturesPerView* features,
+                                                           const fs::path& dir, Model* model) {
   std::map<std::pair<IndexT, IndexT>, uint32_t> index_of;
   if (features != nullptr) {
     for (auto& [image_id, image] : model->images) {

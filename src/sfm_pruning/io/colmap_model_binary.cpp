@@ -26,7 +26,8 @@ void ReadCameras(const fs::path& path, Model* model) {
     const size_t num_params = ColmapCameraNumParams(camera.model_id);
     // The record size depends on the model, so an unknown model cannot be skipped.
     if (num_params == 0) {
-      throw FileError(path.string(), "camera model " + ColmapCameraModelName(camera.model_id) + " is not supported");
+      throw FileError(path.string(),
+                      "camera model " + ColmapCameraModelName(camera.model_id) + " is not supported");
     }
     for (size_t k = 0; k < num_params; ++k) camera.params.push_back(in.Read<double>());
     model->cameras[id] = camera;

@@ -2,6 +2,7 @@
 // the intermediate between the .bin / .txt codecs and the conversion to SfmData.
 #pragma once
 
+#include <Eigen/Core>
 #include <array>
 #include <cstdint>
 #include <filesystem>
@@ -9,8 +10,6 @@
 #include <string>
 #include <utility>
 #include <vector>
-
-#include <Eigen/Core>
 
 #include "sfm_pruning/io/colmap_camera.hpp"
 

@@ -93,9 +93,11 @@ void ReadImages(const fs::path& path, Model* model) {
     image.camera_id = reader.Parse<uint32_t>(tokens, "CAMERA_ID");
     // The name is the rest of the line, so names with spaces survive.
     std::getline(tokens >> std::ws, image.name);
-    while (!image.name.empty() && (image.name.back() == '\r' || image.name.back() == ' ')) image.name.pop_back();
+    while (!image.name.empty() && (image.name.back() == '\r' || image.name.back() == ' '))
+      image.name.pop_back();
     if (image.name.empty()) throw reader.Fail("cannot read NAME");
-    if (!reader.NextLine(&line)) throw reader.Fail("missing the POINTS2D line of image " + std::to_string(id));
+    if (!reader.NextLine(&line))
+      throw reader.Fail("missing the POINTS2D line of image " + std::to_string(id));
     std::istringstream points(line);
     while (HasMoreTokens(points)) {
       Point2D point;
@@ -167,7 +169,8 @@ void WriteTextModel(const Model& model, const fs::path& dir) {
         << "#   CAMERA_ID, MODEL, WIDTH, HEIGHT, PARAMS[]\n"
         << "# Number of cameras: " << model.cameras.size() << "\n";
     for (const auto& [id, camera] : model.cameras) {
-      out << id << ' ' << ColmapCameraModelName(camera.model_id) << ' ' << camera.width << ' ' << camera.height;
+      out << id << ' ' << ColmapCameraModelName(camera.model_id) << ' ' << camera.width << ' '
+          << camera.height;
       for (double p : camera.params) out << ' ' << p;
       out << '\n';
     }

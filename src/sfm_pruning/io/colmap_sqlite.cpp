@@ -142,7 +142,8 @@ std::string Statement::ColumnBlob(int column) const {
 }
 
 void RequireColmapTables(Connection& db) {
-  for (const char* table : {"cameras", "images", "keypoints", "descriptors", "matches", "two_view_geometries"}) {
+  for (const char* table :
+       {"cameras", "images", "keypoints", "descriptors", "matches", "two_view_geometries"}) {
     if (!db.HasTable(table)) {
       throw FileError(db.source(), std::string("not a COLMAP database: table '") + table + "' is missing");
     }
