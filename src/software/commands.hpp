@@ -9,5 +9,6 @@ class App;
 namespace prunesfm {
 
 void AddConvertCommand(CLI::App& app);
+void AddEvaluateCommand(CLI::App& app);
 
 }  // namespace prunesfm

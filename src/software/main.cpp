@@ -23,6 +23,7 @@ int main(int argc, char** argv) {
   app.set_version_flag("--version", "prunesfm 0.1.0");
 
   prunesfm::AddConvertCommand(app);
+  prunesfm::AddEvaluateCommand(app);
 
   try {
     app.parse(argc, argv);
