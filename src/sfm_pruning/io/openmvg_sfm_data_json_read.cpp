@@ -155,7 +155,7 @@ std::string ReadPolymorphicType(const JsonNode& value, PolymorphicIdReader* type
 
 class SfmDataJsonReader {
  public:
-  SfmDataJsonReader(const std::string& version) : version_(version) {}
+  explicit SfmDataJsonReader(const std::string& version) : version_(version) {}
 
   View ReadViewValue(const JsonNode& value) {
     std::string type;
@@ -206,8 +206,7 @@ class SfmDataJsonReader {
   static CameraIntrinsics ReadIntrinsicData(const JsonNode& data, CameraModel model) {
     // The base fields sit in a nested "value0" for spherical cameras and in OpenMVG < 2.0 files.
     const bool nested = data.Has("value0") && data.Child("value0").IsObject();
-    const JsonNode nested_base = nested ? data.Child("value0") : data;
-    const JsonNode& base = nested ? nested_base : data;
+    const JsonNode base = nested ? data.Child("value0") : data;
     IntrinsicRecord record;
     record.width = base.Child("width").Uint();
     record.height = base.Child("height").Uint();
