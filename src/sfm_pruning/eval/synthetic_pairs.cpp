@@ -14,8 +14,8 @@ std::vector<ViewPair> ExhaustivePairs(IndexT num_views) {
 }
 
 std::vector<ViewPair> SequentialAndRetrievalPairs(const std::vector<std::vector<IndexT>>& view_appearances,
-                                                  IndexT num_appearances, int window, int num_candidates,
-                                                  int min_shared) {
+                                                  IndexT num_appearances, int window, int min_loop_gap,
+                                                  int num_candidates, int min_shared) {
   const auto num_views = static_cast<IndexT>(view_appearances.size());
   std::set<ViewPair> pairs;
   for (IndexT i = 0; i < num_views; ++i) {
@@ -41,7 +41,7 @@ std::vector<ViewPair> SequentialAndRetrievalPairs(const std::vector<std::vector<
     for (IndexT a : unique) {
       for (IndexT j : viewers[a]) {
         const IndexT gap = i > j ? i - j : j - i;
-        if (gap <= static_cast<IndexT>(window)) continue;
+        if (gap < static_cast<IndexT>(std::max(window + 1, min_loop_gap))) continue;
         if (score[j]++ == 0) touched.push_back(j);
       }
     }

@@ -51,6 +51,7 @@ SyntheticSceneOptions ResolveDefaults(SyntheticSceneOptions o) {
   if (o.max_distance_m == 0.0) o.max_distance_m = large ? 25.0 : 40.0;
   if (o.sequential_window == 0) o.sequential_window = 5;
   if (o.loop_candidates == 0) o.loop_candidates = 3;
+  if (o.loop_min_gap == 0) o.loop_min_gap = 50;
   if (o.laps == 0) o.laps = 2;
   if (o.twin_fraction < 0.0) o.twin_fraction = 0.25;
   if (o.num_threads == 0) o.num_threads = 1;
@@ -68,7 +69,8 @@ SyntheticSceneOptions ResolveDefaults(SyntheticSceneOptions o) {
   Require(o.ratio_test > 0.0 && o.ratio_test <= 1.0, "ratio_test must be in (0, 1]");
   Require(o.outlier_ratio >= 0.0 && o.outlier_ratio < 1.0, "outlier_ratio must be in [0, 1)");
   Require(o.min_matches >= 0, "min_matches must be >= 0");
-  Require(o.sequential_window > 0 && o.loop_candidates >= 0, "sequential_window must be positive, loop_candidates >= 0");
+  Require(o.sequential_window > 0 && o.loop_candidates >= 0 && o.loop_min_gap > 0,
+          "sequential_window and loop_min_gap must be positive, loop_candidates >= 0");
   Require(o.laps >= 1, "laps must be at least 1");
   Require(o.twin_fraction <= 0.9, "twin_fraction must be in [0, 0.9]");
   Require(o.num_threads >= 1, "num_threads must be at least 1");
@@ -120,7 +122,7 @@ std::vector<ViewPair> SelectPairs(const SyntheticScene& scene, const SceneLayout
   }
   const SyntheticSceneOptions& o = scene.options;
   return SequentialAndRetrievalPairs(view_appearances, layout.num_appearances, o.sequential_window,
-                                     o.loop_candidates, o.min_matches);
+                                     o.loop_min_gap, o.loop_candidates, o.min_matches);
 }
 
 struct PairResult {

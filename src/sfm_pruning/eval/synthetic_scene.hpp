@@ -62,6 +62,7 @@ struct SyntheticSceneOptions {
   int sequential_window = 0;  // default 5: view i is paired with i+1 .. i+window
   int loop_candidates = 0;    // default 3: per view, the best-ranked non-sequential views by
                               // shared appearance (what image retrieval would propose)
+  int loop_min_gap = 0;       // default 50: loop candidates are at least this many frames apart
   // sequential_large: laps of the loop (>= 2 revisits places, giving loop closures) and the
   // fraction of facade segments that repeat another segment (duplicates).
   int laps = 0;                 // default 2
