@@ -15,13 +15,13 @@ endfunction()
 
 # prunesfm_add_test(NAME SOURCES ... DEPENDS ...)
 # One GoogleTest executable per module folder of tests/; every TEST becomes a ctest entry.
-# Tests find the shared data (../shared) through PRUNESFM_SHARED_DIR and skip when it is absent.
+# Tests find the shared data (../shared) through tests/support and skip when it is absent.
 function(prunesfm_add_test name)
   cmake_parse_arguments(ARG "" "" "SOURCES;DEPENDS" ${ARGN})
   add_executable(${name} ${ARG_SOURCES})
   target_compile_options(${name} PRIVATE ${PRUNESFM_WARNING_FLAGS})
   target_link_libraries(${name} PRIVATE ${ARG_DEPENDS} prunesfm_test_support GTest::gtest GTest::gtest_main)
-  gtest_discover_tests(${name}
-    PROPERTIES ENVIRONMENT "PRUNESFM_SHARED_DIR=${PRUNESFM_SHARED_DIR};PRUNESFM_BINARY_DIR=${PROJECT_BINARY_DIR};ASAN_OPTIONS=alloc_dealloc_mismatch=0"
-    DISCOVERY_TIMEOUT 60)
+  # Paths reach the tests as compile definitions of prunesfm_test_support (tests/CMakeLists.txt),
+  # not as ctest ENVIRONMENT: a list-valued ENVIRONMENT does not survive gtest_discover_tests.
+  gtest_discover_tests(${name} DISCOVERY_TIMEOUT 60)
 endfunction()

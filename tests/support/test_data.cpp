@@ -5,16 +5,16 @@
 namespace sfm_pruning::testing {
 namespace fs = std::filesystem;
 
+// PRUNESFM_SHARED_DIR in the environment overrides the folder configured at build time.
 fs::path SharedDir() {
-  const char* dir = std::getenv("PRUNESFM_SHARED_DIR");
-  if (dir == nullptr || !fs::is_directory(dir)) return {};
-  return fs::path(dir);
+  const char* from_environment = std::getenv("PRUNESFM_SHARED_DIR");
+  const fs::path dir = from_environment ? fs::path(from_environment) : fs::path(PRUNESFM_DEFAULT_SHARED_DIR);
+  if (!fs::is_directory(dir)) return {};
+  return fs::weakly_canonical(dir);
 }
 
 fs::path ScratchDir(const std::string& name) {
-  const char* binary_dir = std::getenv("PRUNESFM_BINARY_DIR");
-  const fs::path root = binary_dir ? fs::path(binary_dir) / "test_scratch" : fs::temp_directory_path() / "prunesfm_test_scratch";
-  const fs::path dir = root / name;
+  const fs::path dir = fs::path(PRUNESFM_TEST_SCRATCH_DIR) / name;
   fs::remove_all(dir);
   fs::create_directories(dir);
   return dir;
