@@ -10,5 +10,6 @@ namespace prunesfm {
 
 void AddConvertCommand(CLI::App& app);
 void AddEvaluateCommand(CLI::App& app);
+void AddSynthCommand(CLI::App& app);
 
 }  // namespace prunesfm

@@ -24,6 +24,7 @@ int main(int argc, char** argv) {
 
   prunesfm::AddConvertCommand(app);
   prunesfm::AddEvaluateCommand(app);
+  prunesfm::AddSynthCommand(app);
 
   try {
     app.parse(argc, argv);
