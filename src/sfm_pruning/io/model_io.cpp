@@ -2,7 +2,9 @@
 
 #include <system_error>
 
+#include "sfm_pruning/io/colmap_model.hpp"
 #include "sfm_pruning/io/ground_truth_cameras.hpp"
+#include "sfm_pruning/io/openmvg_sfm_data.hpp"
 #include "sfm_pruning/util/error.hpp"
 
 namespace sfm_pruning {
@@ -36,17 +38,15 @@ ModelFormat DetectModelFormat(const fs::path& path) {
 }
 
 SfmData ReadModel(const fs::path& path) {
-  const ModelFormat format = DetectModelFormat(path);
-  switch (format) {
+  switch (DetectModelFormat(path)) {
+    case ModelFormat::kColmapModel:
+      return ReadColmapModel(path);
+    case ModelFormat::kSfmData:
+      return ReadSfmData(path);
     case ModelFormat::kGroundTruthCameras:
       return ReadGroundTruthCameras(path);
-    case ModelFormat::kColmapModel:
-      // TODO(io): dispatch to ReadColmapModel(path) (io/colmap_model.hpp) once it has landed.
-    case ModelFormat::kSfmData:
-      // TODO(io): dispatch to ReadSfmData(path) (io/openmvg_sfm_data.hpp) once it has landed.
-      break;
   }
-  throw FileError(path.string(), ModelFormatName(format) + " format not supported yet");
+  throw FileError(path.string(), "unknown model format");
 }
 
 }  // namespace sfm_pruning
