@@ -1,0 +1,80 @@
+// prunesfm synth: the written project reads back as the scene the library generates.
+#include <gtest/gtest.h>
+
+#include "run_prunesfm.hpp"
+#include "sfm_pruning/eval/synthetic_scene.hpp"
+#include "sfm_pruning/io/colmap_database.hpp"
+#include "sfm_pruning/io/openmvg_features.hpp"
+#include "sfm_pruning/io/openmvg_matches.hpp"
+#include "sfm_pruning/io/openmvg_sfm_data.hpp"
+#include "sfm_pruning/util/atomic_file.hpp"
+#include "support/test_data.hpp"
+
+namespace sfm_pruning::testing {
+namespace {
+
+SyntheticSceneOptions CliOptions() {
+  SyntheticSceneOptions options;
+  options.scene = "street";
+  options.seed = 5;
+  options.num_views = 6;
+  options.point_density_scale = 0.3;
+  return options;
+}
+
+CommandResult RunSynth(const std::filesystem::path& out) {
+  return RunPrunesfm({"synth", "--scene", "street", "--seed", "5", "--num_views", "6", "--point_density_scale", "0.3",
+                      "--output", out.string()});
+}
+
+TEST(CliSynth, WritesAProjectThatReadsBackAsTheScene) {
+  const std::filesystem::path dir = ScratchDir("cli_synth") / "scene";
+  const CommandResult result = RunSynth(dir);
+  ASSERT_EQ(result.exit_code, 0) << result.err;
+  const SyntheticScene scene = GenerateSyntheticScene(CliOptions());
+
+  const SfmData listing = ReadSfmData(dir / "sfm_data.json");
+  EXPECT_EQ(listing.views, scene.ground_truth.views);
+  EXPECT_TRUE(listing.poses.empty());
+  const SfmData truth = ReadSfmData(dir / "ground_truth" / "sfm_data.json");
+  EXPECT_EQ(truth.views.size(), scene.ground_truth.views.size());
+  EXPECT_EQ(truth.structure.size(), scene.ground_truth.structure.size());
+  EXPECT_TRUE(std::filesystem::exists(dir / "ground_truth" / "gt_cameras.txt"));
+  EXPECT_TRUE(std::filesystem::exists(dir / "ground_truth" / "synthetic_scene.json"));
+
+  const FeaturesPerView features = ReadOpenMvgFeatures(listing, dir / "matches", /*with_descriptors=*/true);
+  ASSERT_EQ(features.size(), scene.features.size());
+  for (const auto& [view, set] : scene.features) EXPECT_EQ(features.at(view).descriptors, set.descriptors);
+  EXPECT_EQ(ReadOpenMvgMatches(dir / "matches" / "matches.putative.bin"), scene.putative_matches);
+
+  const ColmapDatabase database = ReadColmapDatabase(dir / "database.db");
+  EXPECT_EQ(database.putative, scene.putative_matches);
+  ASSERT_EQ(database.features.size(), scene.features.size());
+  for (const auto& [view, set] : scene.features) {
+    ASSERT_EQ(database.features.at(view).size(), set.size());
+    EXPECT_NEAR(database.features.at(view).keypoints[0].x, set.keypoints[0].x, 1e-3);
+  }
+}
+
+TEST(CliSynth, SameSeedWritesIdenticalFiles) {
+  const std::filesystem::path a = ScratchDir("cli_synth_a") / "scene", b = ScratchDir("cli_synth_b") / "scene";
+  ASSERT_EQ(RunSynth(a).exit_code, 0);
+  ASSERT_EQ(RunSynth(b).exit_code, 0);
+  for (const char* file : {"sfm_data.json", "matches/matches.putative.bin", "matches/view_00003.desc",
+                           "matches/view_00003.feat", "ground_truth/sfm_data.json", "ground_truth/gt_cameras.txt"}) {
+    EXPECT_EQ(ReadFileToString(a / file), ReadFileToString(b / file)) << file;
+  }
+}
+
+TEST(CliSynth, BadOptionGivesOneLineAndNoOutput) {
+  const std::filesystem::path dir = ScratchDir("cli_synth_bad") / "scene";
+  const CommandResult result =
+      RunPrunesfm({"synth", "--scene", "clean", "--outlier_ratio", "1.5", "--output", dir.string()});
+  EXPECT_EQ(result.exit_code, 1);
+  EXPECT_EQ(CountLines(result.err), 1) << result.err;
+  EXPECT_NE(result.err.find("outlier_ratio"), std::string::npos) << result.err;
+  EXPECT_FALSE(std::filesystem::exists(dir));
+}
+
+}  // namespace
+}  // namespace sfm_pruning::testing
