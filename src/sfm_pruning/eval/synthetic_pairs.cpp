@@ -22,10 +22,13 @@ std::vector<ViewPair> SequentialAndRetrievalPairs(const std::vector<std::vector<
     for (IndexT j = i + 1; j < num_views && j <= i + static_cast<IndexT>(window); ++j) pairs.insert({i, j});
   }
 
-  // Inverted index: appearance -> views that see it (each view once per appearance).
+  // Each view counts an appearance once (it may see several twins of it), and an inverted
+  // index appearance -> views that see it.
+  std::vector<std::vector<IndexT>> unique_appearances(num_views);
   std::vector<std::vector<IndexT>> viewers(num_appearances);
   for (IndexT v = 0; v < num_views; ++v) {
-    std::vector<IndexT> unique = view_appearances[v];
+    std::vector<IndexT>& unique = unique_appearances[v];
+    unique = view_appearances[v];
     std::sort(unique.begin(), unique.end());
     unique.erase(std::unique(unique.begin(), unique.end()), unique.end());
     for (IndexT a : unique) viewers[a].push_back(v);
@@ -35,10 +38,7 @@ std::vector<ViewPair> SequentialAndRetrievalPairs(const std::vector<std::vector<
   std::vector<IndexT> touched;
   for (IndexT i = 0; i < num_views; ++i) {
     touched.clear();
-    std::vector<IndexT> unique = view_appearances[i];
-    std::sort(unique.begin(), unique.end());
-    unique.erase(std::unique(unique.begin(), unique.end()), unique.end());
-    for (IndexT a : unique) {
+    for (IndexT a : unique_appearances[i]) {
       for (IndexT j : viewers[a]) {
         const IndexT gap = i > j ? i - j : j - i;
         if (gap < static_cast<IndexT>(std::max(window + 1, min_loop_gap))) continue;
