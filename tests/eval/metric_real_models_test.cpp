@@ -2,7 +2,9 @@
 // ground truth must give the AUCs published with the files (../shared/formats/colmap/README.md).
 #include <gtest/gtest.h>
 
+#include <filesystem>
 #include <string>
+#include <vector>
 
 #include "sfm_pruning/eval/model_evaluation.hpp"
 #include "sfm_pruning/io/model_io.hpp"
@@ -15,31 +17,36 @@ namespace {
 constexpr double kPublishedRounding = 0.1;
 constexpr const char* kTempleTruth = "datasets/middlebury/templeSparseRing/gt_cameras.txt";
 
-void ExpectPublishedAucs(const EvaluationReport& report, const std::vector<double>& published) {
-  ASSERT_EQ(report.auc.size(), published.size());
-  for (size_t k = 0; k < published.size(); ++k) {
-    EXPECT_NEAR(report.auc[k].auc_percent, published[k], kPublishedRounding) << "AUC@" << report.auc[k].threshold_deg;
+struct PublishedRun {
+  size_t num_registered_images;
+  size_t num_failed_pairs;
+  std::vector<double> auc_percent;  // at 3, 5, 10 degrees
+};
+
+void ExpectPublishedRun(const std::filesystem::path& model, const std::filesystem::path& truth,
+                        const PublishedRun& published) {
+  const EvaluationReport report = EvaluateModel(ReadModel(model), ReadModel(truth));
+  EXPECT_EQ(report.num_ground_truth_images, 16u);
+  EXPECT_EQ(report.num_registered_images, published.num_registered_images);
+  EXPECT_EQ(report.num_failed_pairs, published.num_failed_pairs);
+  ASSERT_EQ(report.auc.size(), published.auc_percent.size());
+  for (size_t k = 0; k < report.auc.size(); ++k) {
+    EXPECT_NEAR(report.auc[k].auc_percent, published.auc_percent[k], kPublishedRounding)
+        << "AUC@" << report.auc[k].threshold_deg;
   }
 }
 
 TEST(RealModels, Colmap38IncrementalTemple) {
   PRUNESFM_REQUIRE_SHARED(kTempleTruth, truth_path);
   PRUNESFM_REQUIRE_SHARED("formats/colmap/colmap-3.8/sparse_bin", model_path);
-  const EvaluationReport report = EvaluateModel(ReadModel(model_path), ReadModel(truth_path));
-  EXPECT_EQ(report.num_registered_images, 13u);
-  EXPECT_EQ(report.num_ground_truth_images, 16u);
   // 3 unregistered images: 3 * 15 - 3 pairs among themselves = 42 of 120 pairs fail.
-  EXPECT_EQ(report.num_failed_pairs, 42u);
-  ExpectPublishedAucs(report, {49.5, 55.4, 59.8});
+  ExpectPublishedRun(model_path, truth_path, {13, 42, {49.5, 55.4, 59.8}});
 }
 
 TEST(RealModels, Colmap411GlobalTemple) {
   PRUNESFM_REQUIRE_SHARED(kTempleTruth, truth_path);
   PRUNESFM_REQUIRE_SHARED("formats/colmap/colmap-4.1.1/sparse_bin", model_path);
-  const EvaluationReport report = EvaluateModel(ReadModel(model_path), ReadModel(truth_path));
-  EXPECT_EQ(report.num_registered_images, 16u);
-  EXPECT_EQ(report.num_failed_pairs, 0u);
-  ExpectPublishedAucs(report, {70.4, 81.9, 90.5});
+  ExpectPublishedRun(model_path, truth_path, {16, 0, {70.4, 81.9, 90.5}});
 }
 
 TEST(RealModels, TextAndBinaryEncodingsAgree) {
