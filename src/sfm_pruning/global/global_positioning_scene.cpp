@@ -1,0 +1,50 @@
+#include "sfm_pruning/global/global_positioning_scene.hpp"
+
+#include "sfm_pruning/sfm/pose.hpp"
+
+namespace sfm_pruning {
+
+double RayAngularResidualDeg(const PositioningObservation& observation, const Eigen::Vector3d& center,
+                             const Eigen::Vector3d& point) {
+  return RadToDeg(AngleBetweenVectors(observation.ray_world, point - center));
+}
+
+void WritePositionedScene(const std::map<IndexT, Eigen::Matrix3d>& rotations,
+                          const std::map<IndexT, Eigen::Vector3d>& centers,
+                          const std::vector<PositioningTrack>& tracks,
+                          const std::vector<std::optional<Eigen::Vector3d>>& points, double max_angular_residual_deg,
+                          SfmData* sfm_data, PositioningResult* result) {
+  sfm_data->poses.clear();
+  sfm_data->structure.clear();
+  for (const auto& [view_id, center] : centers) {
+    sfm_data->poses[sfm_data->views.at(view_id).id_pose] = Pose(rotations.at(view_id), center);
+  }
+  result->num_positioned_views = centers.size();
+
+  for (size_t t = 0; t < tracks.size(); ++t) {
+    if (!points[t]) {
+      ++result->num_dropped_tracks;
+      continue;
+    }
+    Landmark landmark;
+    landmark.X = *points[t];
+    for (const PositioningObservation& observation : tracks[t].observations) {
+      const auto center = centers.find(observation.view_id);
+      if (center == centers.end()) continue;
+      if (RayAngularResidualDeg(observation, center->second, landmark.X) > max_angular_residual_deg) {
+        ++result->num_filtered_observations;
+        continue;
+      }
+      landmark.observations[observation.view_id] = Observation{observation.pixel, observation.feature_id};
+    }
+    if (landmark.observations.size() < 2) {
+      ++result->num_dropped_tracks;
+      continue;
+    }
+    result->num_observations += landmark.observations.size();
+    sfm_data->structure[static_cast<IndexT>(tracks[t].track_id)] = std::move(landmark);
+  }
+  result->num_landmarks = sfm_data->structure.size();
+}
+
+}  // namespace sfm_pruning

@@ -1,0 +1,51 @@
+// The output side shared by both positioning methods: the result record, and writing camera
+// centres + points into SfmData with the angular outlier filter.
+#pragma once
+
+#include <cstddef>
+#include <map>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include <Eigen/Core>
+
+#include "sfm_pruning/global/global_positioning_rays.hpp"
+#include "sfm_pruning/sfm/sfm_data.hpp"
+
+namespace sfm_pruning {
+
+struct PositioningResult {
+  bool success = false;
+  std::string message;  // why it failed, or the solver's termination message
+
+  size_t num_positioned_views = 0;  // poses written
+  size_t num_landmarks = 0;         // landmarks written
+  size_t num_observations = 0;      // observations written
+  // Observations whose ray misses its point by more than the angular threshold.
+  size_t num_filtered_observations = 0;
+  // Tracks with no landmark: no point, or fewer than two observations left after the filter.
+  size_t num_dropped_tracks = 0;
+
+  int num_solver_iterations = 0;
+  double initial_cost = 0.0;  // solver cost (0.5 * sum of robustified squared residuals)
+  double final_cost = 0.0;
+};
+
+// Angle in degrees between an observation's world ray and the direction from the camera centre to
+// the point (180 for a point behind the camera, whatever the camera model).
+double RayAngularResidualDeg(const PositioningObservation& observation, const Eigen::Vector3d& center,
+                             const Eigen::Vector3d& point);
+
+// Replaces sfm_data->poses and sfm_data->structure: one pose (rotation from `rotations`, centre
+// from `centers`) per view of `centers`, under the view's id_pose; one landmark per track with a
+// point, keyed by PositioningTrack::track_id, holding the observations of views with a centre
+// whose RayAngularResidualDeg is at most `max_angular_residual_deg`, if at least two remain.
+// Fills the counts of `result`.
+void WritePositionedScene(const std::map<IndexT, Eigen::Matrix3d>& rotations,
+                          const std::map<IndexT, Eigen::Vector3d>& centers,
+                          const std::vector<PositioningTrack>& tracks,
+                          const std::vector<std::optional<Eigen::Vector3d>>& points, double max_angular_residual_deg,
+                          SfmData* sfm_data, PositioningResult* result);
+
+}  // namespace sfm_pruning

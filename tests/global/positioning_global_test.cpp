@@ -1,0 +1,109 @@
+#include <gtest/gtest.h>
+
+#include "positioning_synthetic_scene.hpp"
+#include "sfm_pruning/global/global_positioning.hpp"
+
+namespace sfm_pruning {
+namespace {
+
+using testing::MakePositioningScene;
+using testing::MaxRelativeCenterError;
+using testing::PositioningScene;
+using testing::PositioningSceneOptions;
+
+std::vector<Track> TracksOf(const PositioningScene& scene) { return BuildTracks(scene.graph).tracks; }
+
+TEST(GlobalPositioning, RecoversExactSceneUpToSimilarity) {
+  PositioningScene scene = MakePositioningScene({});
+  const std::vector<Track> tracks = TracksOf(scene);
+  const PositioningResult result =
+      PositionCamerasAndPoints({}, scene.rotations, tracks, scene.features, &scene.sfm_data);
+  ASSERT_TRUE(result.success) << result.message;
+  EXPECT_EQ(result.num_positioned_views, scene.true_poses.size());
+  EXPECT_EQ(scene.sfm_data.poses.size(), scene.true_poses.size());
+  EXPECT_LT(MaxRelativeCenterError(scene.true_poses, scene.sfm_data), 1e-4);
+  EXPECT_EQ(result.num_filtered_observations, 0u);
+  EXPECT_EQ(result.num_landmarks, tracks.size());
+  // Rotations are passed through; observations carry the feature id and its pixel.
+  for (const auto& [view_id, pose] : scene.true_poses) {
+    EXPECT_TRUE(scene.sfm_data.poses.at(scene.sfm_data.views.at(view_id).id_pose).rotation.isApprox(pose.rotation));
+  }
+  for (const auto& [landmark_id, landmark] : scene.sfm_data.structure) {
+    ASSERT_LT(landmark_id, tracks.size());
+    EXPECT_EQ(landmark.observations.size(), tracks[landmark_id].size());
+    for (const auto& [view_id, observation] : landmark.observations) {
+      EXPECT_EQ(observation.id_feat, tracks[landmark_id].at(view_id));
+      EXPECT_EQ(observation.x, scene.features.at(view_id).Position(observation.id_feat));
+    }
+  }
+}
+
+TEST(GlobalPositioning, NoiseAndOutliersStayWithinOnePercent) {
+  PositioningSceneOptions options;
+  options.pixel_noise_std = 1.0;
+  options.outlier_ratio = 0.05;
+  PositioningScene scene = MakePositioningScene(options);
+  const PositioningResult result =
+      PositionCamerasAndPoints({}, scene.rotations, TracksOf(scene), scene.features, &scene.sfm_data);
+  ASSERT_TRUE(result.success) << result.message;
+  EXPECT_LT(MaxRelativeCenterError(scene.true_poses, scene.sfm_data), 0.01);
+
+  // The angular filter removes most outliers and keeps almost every inlier.
+  size_t num_outliers = 0, num_outliers_kept = 0;
+  for (const auto& [key, outlier] : scene.is_outlier) num_outliers += outlier ? 1 : 0;
+  size_t num_inliers_kept = 0;
+  for (const auto& [landmark_id, landmark] : scene.sfm_data.structure) {
+    for (const auto& [view_id, observation] : landmark.observations) {
+      (scene.is_outlier.at({view_id, observation.id_feat}) ? num_outliers_kept : num_inliers_kept)++;
+    }
+  }
+  EXPECT_GT(result.num_filtered_observations, num_outliers / 2);
+  EXPECT_LT(num_outliers_kept, num_outliers / 5);
+  EXPECT_GT(num_inliers_kept, (scene.is_outlier.size() - num_outliers) * 9 / 10);
+}
+
+TEST(GlobalPositioning, DeterministicForASeed) {
+  PositioningSceneOptions options;
+  options.num_cameras = 20;
+  options.num_points = 500;
+  options.pixel_noise_std = 0.5;
+  PositioningScene scene = MakePositioningScene(options);
+  SfmData first = scene.sfm_data, second = scene.sfm_data;
+  const std::vector<Track> tracks = TracksOf(scene);
+  PositionCamerasAndPoints({}, scene.rotations, tracks, scene.features, &first);
+  PositionCamerasAndPoints({}, scene.rotations, tracks, scene.features, &second);
+  EXPECT_TRUE(first == second);
+}
+
+TEST(GlobalPositioning, FailsWithoutTracksAndLeavesTheSceneUntouched) {
+  PositioningScene scene = MakePositioningScene({});
+  const SfmData before = scene.sfm_data;
+  const PositioningResult result =
+      PositionCamerasAndPoints({}, scene.rotations, {}, scene.features, &scene.sfm_data);
+  EXPECT_FALSE(result.success);
+  EXPECT_FALSE(result.message.empty());
+  EXPECT_TRUE(scene.sfm_data == before);
+}
+
+TEST(GlobalPositioning, RejectsRigs) {
+  PositioningScene scene = MakePositioningScene({});
+  scene.sfm_data.views.at(12).id_pose = scene.sfm_data.views.at(10).id_pose;
+  const PositioningResult result =
+      PositionCamerasAndPoints({}, scene.rotations, TracksOf(scene), scene.features, &scene.sfm_data);
+  EXPECT_FALSE(result.success);
+  EXPECT_NE(result.message.find("rig"), std::string::npos);
+}
+
+TEST(GlobalPositioning, ViewsWithoutRotationAreLeftOut) {
+  PositioningScene scene = MakePositioningScene({});
+  scene.rotations.erase(10);
+  const PositioningResult result =
+      PositionCamerasAndPoints({}, scene.rotations, TracksOf(scene), scene.features, &scene.sfm_data);
+  ASSERT_TRUE(result.success) << result.message;
+  EXPECT_EQ(scene.sfm_data.poses.count(scene.sfm_data.views.at(10).id_pose), 0u);
+  for (const auto& [landmark_id, landmark] : scene.sfm_data.structure) EXPECT_EQ(landmark.observations.count(10), 0u);
+  EXPECT_LT(MaxRelativeCenterError(scene.true_poses, scene.sfm_data), 1e-4);
+}
+
+}  // namespace
+}  // namespace sfm_pruning
