@@ -1,7 +1,6 @@
 // gt_cameras.txt written for a synthetic scene reads back as the same cameras.
 #include <gtest/gtest.h>
 
-#include "sfm_pruning/eval/synthetic_gt_cameras.hpp"
 #include "sfm_pruning/eval/synthetic_scene.hpp"
 #include "sfm_pruning/io/ground_truth_cameras.hpp"
 #include "sfm_pruning/util/error.hpp"

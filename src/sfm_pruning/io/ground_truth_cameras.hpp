@@ -24,4 +24,10 @@ namespace sfm_pruning {
 // duplicate image name, or a file without cameras.
 SfmData ReadGroundTruthCameras(const std::filesystem::path& path);
 
+// One line per posed view, in view id order: filename width height fx fy cx cy 0 R(row-major) t,
+// every number with 17 significant digits (an exact round trip). Atomic. Throws Error naming the
+// file for an intrinsic the format cannot hold (distortion, spherical). Synthetic scenes ship
+// their truth this way, in the same form as the real benchmarks.
+void WriteGroundTruthCameras(const SfmData& data, const std::filesystem::path& path);
+
 }  // namespace sfm_pruning

@@ -5,6 +5,7 @@
 #include "sfm_pruning/io/colmap_model.hpp"
 #include "sfm_pruning/io/ground_truth_cameras.hpp"
 #include "sfm_pruning/io/openmvg_sfm_data.hpp"
+#include "sfm_pruning/io/ply.hpp"
 #include "sfm_pruning/util/error.hpp"
 
 namespace sfm_pruning {
@@ -18,6 +19,8 @@ std::string ModelFormatName(ModelFormat format) {
       return "sfm_data";
     case ModelFormat::kGroundTruthCameras:
       return "gt_cameras.txt";
+    case ModelFormat::kPly:
+      return "PLY";
   }
   return "unknown";
 }
@@ -33,8 +36,17 @@ ModelFormat DetectModelFormat(const fs::path& path) {
   const std::string extension = path.extension().string();
   if (extension == ".json" || extension == ".bin") return ModelFormat::kSfmData;
   if (extension == ".txt") return ModelFormat::kGroundTruthCameras;
+  if (extension == ".ply") return ModelFormat::kPly;
   throw FileError(path.string(),
-                  "unknown model format (expected a COLMAP model folder, sfm_data.json/.bin or gt_cameras.txt)");
+                  "unknown model format (expected a COLMAP model folder, sfm_data.json/.bin, gt_cameras.txt or .ply)");
+}
+
+ModelFormat OutputModelFormat(const fs::path& path) {
+  const std::string extension = path.extension().string();
+  if (extension == ".json" || extension == ".bin") return ModelFormat::kSfmData;
+  if (extension == ".ply") return ModelFormat::kPly;
+  if (extension == ".txt") return ModelFormat::kGroundTruthCameras;
+  return ModelFormat::kColmapModel;
 }
 
 SfmData ReadModel(const fs::path& path) {
@@ -45,8 +57,27 @@ SfmData ReadModel(const fs::path& path) {
       return ReadSfmData(path);
     case ModelFormat::kGroundTruthCameras:
       return ReadGroundTruthCameras(path);
+    case ModelFormat::kPly:
+      return ReadPlyPoints(path);
   }
   throw FileError(path.string(), "unknown model format");
+}
+
+void WriteModel(const SfmData& data, const fs::path& path, const ModelWriteOptions& options) {
+  switch (OutputModelFormat(path)) {
+    case ModelFormat::kColmapModel:
+      WriteColmapModel(data, path, options.colmap_text ? ColmapModelFormat::kText : ColmapModelFormat::kBinary);
+      return;
+    case ModelFormat::kSfmData:
+      WriteSfmData(data, path);
+      return;
+    case ModelFormat::kGroundTruthCameras:
+      WriteGroundTruthCameras(data, path);
+      return;
+    case ModelFormat::kPly:
+      WritePly(data, path);
+      return;
+  }
 }
 
 }  // namespace sfm_pruning

@@ -1,6 +1,6 @@
-// Reading a reconstruction from any model format the project reads, chosen from the path.
-// Commands that accept "a model" (evaluate, convert, ...) go through ReadModel so that every
-// format works everywhere.
+// Reading and writing a reconstruction in any model format the project supports, chosen from
+// the path. Commands that accept "a model" (evaluate, convert, ...) go through ReadModel and
+// WriteModel so that every format works everywhere.
 #pragma once
 
 #include <filesystem>
@@ -14,6 +14,7 @@ enum class ModelFormat {
   kColmapModel,        // a directory holding cameras.bin or cameras.txt (+ images, points3D)
   kSfmData,            // OpenMVG sfm_data: *.json or *.bin
   kGroundTruthCameras, // a benchmark gt_cameras.txt (any *.txt file)
+  kPly,                // *.ply: points (and camera centres) only
 };
 
 // Human-readable name for messages ("COLMAP model", "sfm_data", "gt_cameras.txt").
@@ -23,11 +24,24 @@ std::string ModelFormatName(ModelFormat format);
 //   directory containing cameras.bin or cameras.txt -> kColmapModel
 //   file *.json or *.bin                            -> kSfmData
 //   file *.txt                                      -> kGroundTruthCameras
+//   file *.ply                                      -> kPly
 // Throws Error naming the path when it does not exist or matches none of these.
 ModelFormat DetectModelFormat(const std::filesystem::path& path);
+
+// The format an output path asks for: *.json / *.bin -> sfm_data, *.ply -> PLY, *.txt ->
+// gt_cameras.txt, anything else (no extension, an existing folder) -> a COLMAP model folder.
+ModelFormat OutputModelFormat(const std::filesystem::path& path);
 
 // Reads the model with the reader of its detected format. Throws Error (one line naming the
 // file and the problem) on any bad input.
 SfmData ReadModel(const std::filesystem::path& path);
+
+struct ModelWriteOptions {
+  bool colmap_text = false;  // COLMAP folders: .txt files instead of .bin
+};
+
+// Writes `data` in the format OutputModelFormat(path) selects, atomically. gt_cameras.txt needs
+// undistorted pinhole cameras; PLY keeps only points and camera centres.
+void WriteModel(const SfmData& data, const std::filesystem::path& path, const ModelWriteOptions& options = {});
 
 }  // namespace sfm_pruning

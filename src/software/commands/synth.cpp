@@ -14,7 +14,7 @@
 #include <memory>
 #include <nlohmann/json.hpp>
 
-#include "sfm_pruning/eval/synthetic_gt_cameras.hpp"
+#include "sfm_pruning/io/ground_truth_cameras.hpp"
 #include "sfm_pruning/eval/synthetic_scene.hpp"
 #include "sfm_pruning/io/colmap_database.hpp"
 #include "sfm_pruning/io/openmvg_features.hpp"
