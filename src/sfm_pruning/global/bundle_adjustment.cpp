@@ -1,0 +1,222 @@
+#include "sfm_pruning/global/bundle_adjustment.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <memory>
+#include <vector>
+
+#include <ceres/ceres.h>
+
+#include "sfm_pruning/global/bundle_observations.hpp"
+#include "sfm_pruning/global/bundle_parameters.hpp"
+#include "sfm_pruning/global/bundle_reprojection_cost.hpp"
+
+namespace sfm_pruning {
+namespace {
+
+// Indices of the intrinsic parameters (camera_models.hpp layouts) held constant.
+std::vector<int> ConstantIntrinsicParams(CameraModel model, const BundleAdjustmentOptions& options) {
+  const int num_params = static_cast<int>(NumCameraParams(model));
+  const bool two_focals = model == CameraModel::kPinholeFxFy;
+  const int first_principal = two_focals ? 2 : 1;
+  const int first_distortion = two_focals ? num_params : camera_models::kFirstDistortionParam;
+  std::vector<int> constant;
+  for (int k = 0; k < num_params; ++k) {
+    const bool refine = k < first_principal       ? options.refine_focal
+                        : k < first_principal + 2 ? options.refine_principal_point
+                        : k >= first_distortion   ? options.refine_distortion
+                                                  : false;
+    if (!refine) constant.push_back(k);
+  }
+  return constant;
+}
+
+struct ErrorSummary {
+  double rms_px = 0.0;
+  size_t num_behind = 0;
+};
+
+// Unrobustified reprojection errors of the landmarks in the problem, as stored in `data`.
+ErrorSummary MeasureErrors(const SfmData& data, const BundleParameters& parameters) {
+  double sum_squared = 0.0;
+  size_t num_finite = 0;
+  ErrorSummary summary;
+  for (size_t k = 0; k < parameters.landmark_ids().size(); ++k) {
+    const Eigen::Vector3d& X = data.structure.at(parameters.landmark_ids()[k]).X;
+    for (const PosedObservation& obs : parameters.observations(k)) {
+      const double error = ReprojectionErrorPx(obs, X);
+      if (!std::isfinite(error)) {
+        ++summary.num_behind;
+        continue;
+      }
+      sum_squared += error * error;
+      ++num_finite;
+    }
+  }
+  // Two coordinates per observation: the RMS is per coordinate.
+  if (num_finite > 0) summary.rms_px = std::sqrt(sum_squared / (2.0 * static_cast<double>(num_finite)));
+  return summary;
+}
+
+// Pose id of the smallest posed view id in the problem, kUndefinedIndex if none.
+IndexT FirstPoseId(const SfmData& data, const BundleParameters& parameters) {
+  for (const auto& [view_id, view] : data.views) {
+    if (data.IsPosed(view) && parameters.pose_slots().count(view.id_pose)) return view.id_pose;
+  }
+  return kUndefinedIndex;
+}
+
+// Applies the gauge of the header comment; returns the pose held constant (or kUndefinedIndex).
+IndexT FixGauge(const BundleAdjustmentOptions& options, const SfmData& data, BundleParameters* parameters,
+                ceres::Problem* problem) {
+  if (!options.fix_first_pose) return kUndefinedIndex;
+  const IndexT first = FirstPoseId(data, *parameters);
+  if (first == kUndefinedIndex) return first;
+  problem->SetParameterBlockConstant(parameters->quaternion(first));
+  problem->SetParameterBlockConstant(parameters->center(first));
+  if (!options.fix_scale) return first;
+
+  const Eigen::Map<const Eigen::Vector3d> first_center(parameters->center(first));
+  IndexT second = kUndefinedIndex;
+  double max_distance = 0.0;
+  for (const auto& [pose_id, slot] : parameters->pose_slots()) {  // ties go to the smallest id
+    const double distance = (Eigen::Map<const Eigen::Vector3d>(parameters->center(pose_id)) - first_center).norm();
+    if (distance > max_distance) {
+      max_distance = distance;
+      second = pose_id;
+    }
+  }
+  if (second == kUndefinedIndex) return first;  // all centres coincide: no scale to fix
+  int axis = 0;
+  (Eigen::Map<const Eigen::Vector3d>(parameters->center(second)) - first_center).cwiseAbs().maxCoeff(&axis);
+  problem->SetManifold(parameters->center(second), new ceres::SubsetManifold(3, {axis}));
+  return first;
+}
+
+void SetIntrinsicsManifolds(const BundleAdjustmentOptions& options, const SfmData& data,
+                            BundleParameters* parameters, ceres::Problem* problem) {
+  for (const auto& [id, offset] : parameters->intrinsic_offsets()) {
+    const CameraIntrinsics& intrinsics = data.intrinsics.at(id);
+    if (!IsPinholeFamily(intrinsics.model())) continue;  // no parameters, no block
+    const std::vector<int> constant = ConstantIntrinsicParams(intrinsics.model(), options);
+    const int num_params = static_cast<int>(intrinsics.params().size());
+    if (static_cast<int>(constant.size()) == num_params) {
+      problem->SetParameterBlockConstant(parameters->intrinsics(id));
+    } else if (!constant.empty()) {
+      problem->SetManifold(parameters->intrinsics(id), new ceres::SubsetManifold(num_params, constant));
+    }
+  }
+}
+
+// One residual block per posed observation; returns the number of observations added.
+size_t AddResiduals(const BundleAdjustmentOptions& options, const SfmData& data, BundleParameters* parameters,
+                    ceres::Problem* problem) {
+  // One loss object for every residual: the problem deletes it once.
+  ceres::LossFunction* loss =
+      options.huber_loss_scale_px > 0.0 ? new ceres::HuberLoss(options.huber_loss_scale_px) : nullptr;
+  size_t num_observations = 0;
+  for (size_t k = 0; k < parameters->landmark_ids().size(); ++k) {
+    for (const PosedObservation& obs : parameters->observations(k)) {
+      const CameraIntrinsics& intrinsics = *obs.intrinsics;
+      const Eigen::Vector2d& pixel = obs.observation->x;
+      double* rotation = parameters->quaternion(obs.view->id_pose);
+      double* center = parameters->center(obs.view->id_pose);
+      if (IsPinholeFamily(intrinsics.model())) {
+        problem->AddResidualBlock(bundle::CreatePinholeCost(intrinsics.model(), pixel), loss, rotation, center,
+                                  parameters->point(k), parameters->intrinsics(obs.view->id_intrinsic));
+      } else {
+        problem->AddResidualBlock(bundle::CreateSphericalCost(intrinsics, pixel), loss, rotation, center,
+                                  parameters->point(k));
+      }
+      ++num_observations;
+    }
+  }
+  return num_observations;
+}
+
+// Landmarks first (group 0), then poses and intrinsics: the Schur complement eliminates the
+// landmarks and solves the reduced camera system.
+std::shared_ptr<ceres::ParameterBlockOrdering> EliminationOrdering(const ceres::Problem& problem,
+                                                                   BundleParameters* parameters) {
+  auto ordering = std::make_shared<ceres::ParameterBlockOrdering>();
+  for (size_t k = 0; k < parameters->landmark_ids().size(); ++k) ordering->AddElementToGroup(parameters->point(k), 0);
+  for (const auto& [pose_id, slot] : parameters->pose_slots()) {
+    ordering->AddElementToGroup(parameters->quaternion(pose_id), 1);
+    ordering->AddElementToGroup(parameters->center(pose_id), 1);
+  }
+  for (const auto& [id, offset] : parameters->intrinsic_offsets()) {
+    // Spherical intrinsics have no block in the problem.
+    if (problem.HasParameterBlock(parameters->intrinsics(id))) ordering->AddElementToGroup(parameters->intrinsics(id), 1);
+  }
+  return ordering;
+}
+
+ceres::Solver::Options MakeSolverOptions(const BundleAdjustmentOptions& options) {
+  ceres::Solver::Options solver;
+  solver.linear_solver_type = ceres::SPARSE_SCHUR;
+  solver.max_num_iterations = options.max_num_iterations;
+  solver.function_tolerance = options.function_tolerance;
+  solver.gradient_tolerance = options.gradient_tolerance;
+  solver.parameter_tolerance = options.parameter_tolerance;
+  solver.num_threads = std::max(1, options.num_threads);
+  solver.logging_type = ceres::SILENT;
+  solver.minimizer_progress_to_stdout = false;
+  return solver;
+}
+
+}  // namespace
+
+BundleAdjustmentResult AdjustBundle(const BundleAdjustmentOptions& options, SfmData* sfm_data) {
+  BundleAdjustmentResult result;
+  if (sfm_data->PosedViewIds().empty()) {
+    result.message = "no posed view: nothing to adjust";
+    return result;
+  }
+  BundleParameters parameters(*sfm_data);
+  for (const auto& [landmark_id, landmark] : sfm_data->structure) {
+    const size_t num_posed = PosedObservationsOf(*sfm_data, landmark).size();
+    result.num_skipped_observations += landmark.observations.size() - num_posed;
+    if (num_posed < 2) ++result.num_skipped_landmarks;
+  }
+  if (parameters.landmark_ids().empty()) {
+    result.message = "no landmark seen by two posed views: nothing to adjust";
+    return result;
+  }
+
+  ceres::Problem problem;
+  result.num_observations = AddResiduals(options, *sfm_data, &parameters, &problem);
+  for (const auto& [pose_id, slot] : parameters.pose_slots()) {
+    problem.SetManifold(parameters.quaternion(pose_id), new ceres::QuaternionManifold());
+  }
+  const IndexT gauge_pose = FixGauge(options, *sfm_data, &parameters, &problem);
+  SetIntrinsicsManifolds(options, *sfm_data, &parameters, &problem);
+  result.num_poses = parameters.num_poses();
+  result.num_intrinsics = parameters.num_intrinsics();
+  result.num_landmarks = parameters.landmark_ids().size();
+  const ErrorSummary initial_errors = MeasureErrors(*sfm_data, parameters);
+  result.initial_rms_px = initial_errors.rms_px;
+
+  ceres::Solver::Options solver_options = MakeSolverOptions(options);
+  solver_options.linear_solver_ordering = EliminationOrdering(problem, &parameters);
+  ceres::Solver::Summary summary;
+  ceres::Solve(solver_options, &problem, &summary);
+
+  result.success = summary.IsSolutionUsable();
+  result.message = summary.message;
+  result.termination = ceres::TerminationTypeToString(summary.termination_type);
+  result.initial_cost = summary.initial_cost;
+  result.final_cost = summary.final_cost;
+  result.num_iterations = summary.num_successful_steps + summary.num_unsuccessful_steps;
+  if (!result.success) {  // sfm_data untouched
+    result.final_rms_px = initial_errors.rms_px;
+    result.num_observations_behind = initial_errors.num_behind;
+    return result;
+  }
+  parameters.WriteBack(gauge_pose, sfm_data);
+  const ErrorSummary final_errors = MeasureErrors(*sfm_data, parameters);
+  result.final_rms_px = final_errors.rms_px;
+  result.num_observations_behind = final_errors.num_behind;
+  return result;
+}
+
+}  // namespace sfm_pruning
