@@ -2,6 +2,7 @@
 
 #include "positioning_synthetic_scene.hpp"
 #include "sfm_pruning/global/global_positioning.hpp"
+#include "sfm_pruning/util/error.hpp"
 
 namespace sfm_pruning {
 namespace {
@@ -103,6 +104,40 @@ TEST(GlobalPositioning, ViewsWithoutRotationAreLeftOut) {
   EXPECT_EQ(scene.sfm_data.poses.count(scene.sfm_data.views.at(10).id_pose), 0u);
   for (const auto& [landmark_id, landmark] : scene.sfm_data.structure) EXPECT_EQ(landmark.observations.count(10), 0u);
   EXPECT_LT(MaxRelativeCenterError(scene.true_poses, scene.sfm_data), 1e-4);
+}
+
+TEST(GlobalPositioning, ReportsProgressPerIteration) {
+  PositioningSceneOptions options;
+  options.num_cameras = 20;
+  options.num_points = 500;
+  PositioningScene scene = MakePositioningScene(options);
+  GlobalPositioningOptions positioning;
+  std::vector<size_t> iterations;
+  positioning.solver.progress = [&](const std::string& stage, size_t done, size_t total) {
+    EXPECT_EQ(stage, "global_positioning");
+    EXPECT_EQ(total, static_cast<size_t>(positioning.solver.max_num_iterations));
+    iterations.push_back(done);
+  };
+  const PositioningResult result =
+      PositionCamerasAndPoints(positioning, scene.rotations, TracksOf(scene), scene.features, &scene.sfm_data);
+  ASSERT_TRUE(result.success);
+  EXPECT_GE(iterations.size(), static_cast<size_t>(result.num_solver_iterations));
+}
+
+TEST(GlobalPositioning, ThrowsOnAMissingFeature) {
+  PositioningScene scene = MakePositioningScene({});
+  std::vector<Track> tracks = TracksOf(scene);
+  tracks[0].begin()->second = 1000000;
+  EXPECT_THROW(PositionCamerasAndPoints({}, scene.rotations, tracks, scene.features, &scene.sfm_data), Error);
+}
+
+TEST(RayAngularResidualDeg, ZeroOnTheRayAndHalfTurnBehind) {
+  PositioningObservation observation;
+  observation.ray_world = Eigen::Vector3d(0.0, 0.6, 0.8);
+  const Eigen::Vector3d center(1.0, 2.0, 3.0);
+  EXPECT_NEAR(RayAngularResidualDeg(observation, center, center + 5.0 * observation.ray_world), 0.0, 1e-12);
+  EXPECT_NEAR(RayAngularResidualDeg(observation, center, center - 5.0 * observation.ray_world), 180.0, 1e-12);
+  EXPECT_NEAR(RayAngularResidualDeg(observation, center, center + Eigen::Vector3d(1.0, 0.0, 0.0)), 90.0, 1e-12);
 }
 
 }  // namespace

@@ -86,7 +86,8 @@ double RayConstraintResidualDeg(const RayConstraint& constraint, const std::vect
 
 // Solves the problem above in place: `positions` hold the initial values and receive the
 // solution; positions[fixed_position] is held constant (the translation gauge). Positions that
-// no constraint touches are left as they are. The scales are eliminated first (Schur). Rejection
+// no constraint touches are left as they are. Sparse Cholesky (SuiteSparse) on the normal
+// equations; see the .cpp for why not Schur. Rejection
 // rounds stop early when nothing is rejected or everything would be.
 // `stage` names the progress reports.
 PositioningSolverSummary SolveRayAlignment(const PositioningSolverOptions& options,
