@@ -36,16 +36,13 @@ struct Scene {
   double radius = 0.0;  // of the camera ring: the scene's length scale
 };
 
-// A camera at `center` looking at `target` with world +z up (image +y points down).
-inline Pose LookAt(const Eigen::Vector3d& center, const Eigen::Vector3d& target) {
-  const Eigen::Vector3d z = (target - center).normalized();
-  const Eigen::Vector3d x = z.cross(Eigen::Vector3d::UnitZ()).normalized();
-  const Eigen::Vector3d y = z.cross(x);
-  Eigen::Matrix3d R;
-  R.row(0) = x.transpose();
-  R.row(1) = y.transpose();
-  R.row(2) = z.transpose();
-  return Pose(R, center);
+// World -> camera rotation of a ring camera at `azimuth` whose optical axis is tilted by
+// `elevation` below the horizon (image +y points down, world +z up).
+inline Eigen::Matrix3d RingRotation(double azimuth, double elevation) {
+  Eigen::Matrix3d facing_minus_x;  // the camera at azimuth 0 looks along -x
+  facing_minus_x << 0, 1, 0, 0, 0, -1, -1, 0, 0;
+  return Eigen::AngleAxisd(elevation, Eigen::Vector3d::UnitX()).toRotationMatrix() * facing_minus_x *
+         Eigen::AngleAxisd(-azimuth, Eigen::Vector3d::UnitZ()).toRotationMatrix();
 }
 
 inline Eigen::Vector3d RandomUnitVector(std::mt19937* rng) {
@@ -74,7 +71,9 @@ inline Scene MakeScene(const SceneOptions& options) {
     view.width = 1000;
     view.height = 800;
     data.views[id] = view;
-    data.poses[id] = LookAt(center, Eigen::Vector3d(0.3 * uniform(rng), 0.3 * uniform(rng), 0.0));
+    // Aimed at the origin, give or take a degree.
+    const double elevation = std::atan2(center.z(), scene.radius) + DegToRad(uniform(rng));
+    data.poses[id] = Pose(RingRotation(azimuth + DegToRad(uniform(rng)), elevation), center);
   }
   std::uniform_real_distribution<double> unit(0.0, 1.0);
   IndexT landmark_id = 0;

@@ -82,27 +82,22 @@ class SphericalBearingCost {
 // Residual size of an observation made by a camera of `model`.
 inline int ResidualSize(CameraModel model) { return IsPinholeFamily(model) ? 2 : 3; }
 
+template <int kNumIntrinsicParams>
+ceres::CostFunction* CreatePinholeCostSized(CameraModel model, const Eigen::Vector2d& observed_px) {
+  using Cost = PinholeReprojectionCost<kNumIntrinsicParams>;
+  return new ceres::AutoDiffCostFunction<Cost, 2, 4, 3, 3, kNumIntrinsicParams>(new Cost(model, observed_px));
+}
+
 // The cost of one pinhole-family observation, with the intrinsics block sized for the model.
 // Returns nullptr for a spherical camera (use CreateSphericalCost).
 inline ceres::CostFunction* CreatePinholeCost(CameraModel model, const Eigen::Vector2d& observed_px) {
   switch (NumCameraParams(model)) {
-    case 3:
-      return new ceres::AutoDiffCostFunction<PinholeReprojectionCost<3>, 2, 4, 3, 3, 3>(
-          new PinholeReprojectionCost<3>(model, observed_px));
-    case 4:
-      return new ceres::AutoDiffCostFunction<PinholeReprojectionCost<4>, 2, 4, 3, 3, 4>(
-          new PinholeReprojectionCost<4>(model, observed_px));
-    case 6:
-      return new ceres::AutoDiffCostFunction<PinholeReprojectionCost<6>, 2, 4, 3, 3, 6>(
-          new PinholeReprojectionCost<6>(model, observed_px));
-    case 7:
-      return new ceres::AutoDiffCostFunction<PinholeReprojectionCost<7>, 2, 4, 3, 3, 7>(
-          new PinholeReprojectionCost<7>(model, observed_px));
-    case 8:
-      return new ceres::AutoDiffCostFunction<PinholeReprojectionCost<8>, 2, 4, 3, 3, 8>(
-          new PinholeReprojectionCost<8>(model, observed_px));
-    default:
-      return nullptr;
+    case 3: return CreatePinholeCostSized<3>(model, observed_px);
+    case 4: return CreatePinholeCostSized<4>(model, observed_px);
+    case 6: return CreatePinholeCostSized<6>(model, observed_px);
+    case 7: return CreatePinholeCostSized<7>(model, observed_px);
+    case 8: return CreatePinholeCostSized<8>(model, observed_px);
+    default: return nullptr;
   }
 }
 
