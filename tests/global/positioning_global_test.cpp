@@ -7,22 +7,17 @@
 namespace sfm_pruning {
 namespace {
 
-using testing::MakePositioningScene;
-using testing::MaxRelativeCenterError;
-using testing::PositioningScene;
-using testing::PositioningSceneOptions;
-
-std::vector<Track> TracksOf(const PositioningScene& scene) { return BuildTracks(scene.graph).tracks; }
+std::vector<Track> TracksOf(const testing::PositioningScene& scene) { return BuildTracks(scene.graph).tracks; }
 
 TEST(GlobalPositioning, RecoversExactSceneUpToSimilarity) {
-  PositioningScene scene = MakePositioningScene({});
+  testing::PositioningScene scene = testing::MakePositioningScene({});
   const std::vector<Track> tracks = TracksOf(scene);
   const PositioningResult result =
       PositionCamerasAndPoints({}, scene.rotations, tracks, scene.features, &scene.sfm_data);
   ASSERT_TRUE(result.success) << result.message;
   EXPECT_EQ(result.num_positioned_views, scene.true_poses.size());
   EXPECT_EQ(scene.sfm_data.poses.size(), scene.true_poses.size());
-  EXPECT_LT(MaxRelativeCenterError(scene.true_poses, scene.sfm_data), 1e-4);
+  EXPECT_LT(testing::MaxRelativeCenterError(scene.true_poses, scene.sfm_data), 1e-4);
   EXPECT_EQ(result.num_filtered_observations, 0u);
   EXPECT_EQ(result.num_landmarks, tracks.size());
   // Rotations are passed through; observations carry the feature id and its pixel.
@@ -40,14 +35,14 @@ TEST(GlobalPositioning, RecoversExactSceneUpToSimilarity) {
 }
 
 TEST(GlobalPositioning, NoiseAndOutliersStayWithinOnePercent) {
-  PositioningSceneOptions options;
+  testing::PositioningSceneOptions options;
   options.pixel_noise_std = 1.0;
   options.outlier_ratio = 0.05;
-  PositioningScene scene = MakePositioningScene(options);
+  testing::PositioningScene scene = testing::MakePositioningScene(options);
   const PositioningResult result =
       PositionCamerasAndPoints({}, scene.rotations, TracksOf(scene), scene.features, &scene.sfm_data);
   ASSERT_TRUE(result.success) << result.message;
-  EXPECT_LT(MaxRelativeCenterError(scene.true_poses, scene.sfm_data), 0.01);
+  EXPECT_LT(testing::MaxRelativeCenterError(scene.true_poses, scene.sfm_data), 0.01);
 
   // The angular filter removes most outliers and keeps almost every inlier.
   size_t num_outliers = 0, num_outliers_kept = 0;
@@ -64,11 +59,9 @@ TEST(GlobalPositioning, NoiseAndOutliersStayWithinOnePercent) {
 }
 
 TEST(GlobalPositioning, DeterministicForASeed) {
-  PositioningSceneOptions options;
-  options.num_cameras = 20;
-  options.num_points = 500;
+  testing::PositioningSceneOptions options = testing::SmallSceneOptions();
   options.pixel_noise_std = 0.5;
-  PositioningScene scene = MakePositioningScene(options);
+  testing::PositioningScene scene = testing::MakePositioningScene(options);
   SfmData first = scene.sfm_data, second = scene.sfm_data;
   const std::vector<Track> tracks = TracksOf(scene);
   PositionCamerasAndPoints({}, scene.rotations, tracks, scene.features, &first);
@@ -77,7 +70,7 @@ TEST(GlobalPositioning, DeterministicForASeed) {
 }
 
 TEST(GlobalPositioning, FailsWithoutTracksAndLeavesTheSceneUntouched) {
-  PositioningScene scene = MakePositioningScene({});
+  testing::PositioningScene scene = testing::MakePositioningScene({});
   const SfmData before = scene.sfm_data;
   const PositioningResult result =
       PositionCamerasAndPoints({}, scene.rotations, {}, scene.features, &scene.sfm_data);
@@ -87,7 +80,7 @@ TEST(GlobalPositioning, FailsWithoutTracksAndLeavesTheSceneUntouched) {
 }
 
 TEST(GlobalPositioning, RejectsRigs) {
-  PositioningScene scene = MakePositioningScene({});
+  testing::PositioningScene scene = testing::MakePositioningScene({});
   scene.sfm_data.views.at(12).id_pose = scene.sfm_data.views.at(10).id_pose;
   const PositioningResult result =
       PositionCamerasAndPoints({}, scene.rotations, TracksOf(scene), scene.features, &scene.sfm_data);
@@ -96,21 +89,19 @@ TEST(GlobalPositioning, RejectsRigs) {
 }
 
 TEST(GlobalPositioning, ViewsWithoutRotationAreLeftOut) {
-  PositioningScene scene = MakePositioningScene({});
+  testing::PositioningScene scene = testing::MakePositioningScene({});
   scene.rotations.erase(10);
   const PositioningResult result =
       PositionCamerasAndPoints({}, scene.rotations, TracksOf(scene), scene.features, &scene.sfm_data);
   ASSERT_TRUE(result.success) << result.message;
   EXPECT_EQ(scene.sfm_data.poses.count(scene.sfm_data.views.at(10).id_pose), 0u);
   for (const auto& [landmark_id, landmark] : scene.sfm_data.structure) EXPECT_EQ(landmark.observations.count(10), 0u);
-  EXPECT_LT(MaxRelativeCenterError(scene.true_poses, scene.sfm_data), 1e-4);
+  EXPECT_LT(testing::MaxRelativeCenterError(scene.true_poses, scene.sfm_data), 1e-4);
 }
 
 TEST(GlobalPositioning, ReportsProgressPerIteration) {
-  PositioningSceneOptions options;
-  options.num_cameras = 20;
-  options.num_points = 500;
-  PositioningScene scene = MakePositioningScene(options);
+  testing::PositioningSceneOptions options = testing::SmallSceneOptions();
+  testing::PositioningScene scene = testing::MakePositioningScene(options);
   GlobalPositioningOptions positioning;
   std::vector<size_t> iterations;
   positioning.solver.progress = [&](const std::string& stage, size_t done, size_t total) {
@@ -125,7 +116,7 @@ TEST(GlobalPositioning, ReportsProgressPerIteration) {
 }
 
 TEST(GlobalPositioning, ThrowsOnAMissingFeature) {
-  PositioningScene scene = MakePositioningScene({});
+  testing::PositioningScene scene = testing::MakePositioningScene({});
   std::vector<Track> tracks = TracksOf(scene);
   tracks[0].begin()->second = 1000000;
   EXPECT_THROW(PositionCamerasAndPoints({}, scene.rotations, tracks, scene.features, &scene.sfm_data), Error);

@@ -30,6 +30,14 @@ struct PositioningSceneOptions {
   uint64_t seed = 1;
 };
 
+// The small scene of the determinism and progress tests (20 cameras, 500 points).
+inline PositioningSceneOptions SmallSceneOptions() {
+  PositioningSceneOptions options;
+  options.num_cameras = 20;
+  options.num_points = 500;
+  return options;
+}
+
 struct PositioningScene {
   SfmData sfm_data;  // views (ids 10, 12, ...), two intrinsics; no poses, no structure
   FeaturesPerView features;

@@ -8,11 +8,6 @@
 namespace sfm_pruning {
 namespace {
 
-using testing::MakePositioningScene;
-using testing::MaxRelativeCenterError;
-using testing::PositioningScene;
-using testing::PositioningSceneOptions;
-
 // Replaces the translation of every `stride`-th valid edge by a random unit direction; returns
 // how many were corrupted.
 size_t CorruptDirections(ViewGraph* graph, size_t stride, uint64_t seed) {
@@ -30,7 +25,7 @@ size_t CorruptDirections(ViewGraph* graph, size_t stride, uint64_t seed) {
 TEST(TranslationAveraging, DirectionOfEdgeMatchesTheCentres) {
   // The derivation in translation_averaging.hpp, checked on one true edge: c_j - c_i is parallel
   // to -R_j^T t_ij.
-  const PositioningScene scene = MakePositioningScene({});
+  const testing::PositioningScene scene = testing::MakePositioningScene({});
   const auto& [pair, edge] = *scene.graph.Edges().begin();
   const Eigen::Vector3d baseline = scene.true_poses.at(pair.second).center - scene.true_poses.at(pair.first).center;
   const Eigen::Vector3d direction = -scene.rotations.at(pair.second).transpose() * edge.relative_pose.translation;
@@ -38,7 +33,7 @@ TEST(TranslationAveraging, DirectionOfEdgeMatchesTheCentres) {
 }
 
 TEST(TranslationAveraging, RecoversExactCentresAndTriangulatesTheTracks) {
-  PositioningScene scene = MakePositioningScene({});
+  testing::PositioningScene scene = testing::MakePositioningScene({});
   const std::vector<Track> tracks = BuildTracks(scene.graph).tracks;
   const TranslationAveragingResult result = PositionCamerasByTranslationAveraging(
       {}, scene.graph, scene.rotations, tracks, scene.features, &scene.sfm_data);
@@ -46,28 +41,26 @@ TEST(TranslationAveraging, RecoversExactCentresAndTriangulatesTheTracks) {
   EXPECT_EQ(result.num_edges, scene.graph.NumValidEdges());
   EXPECT_EQ(result.num_rejected_edges, 0u);
   EXPECT_EQ(result.positioning.num_positioned_views, scene.true_poses.size());
-  EXPECT_LT(MaxRelativeCenterError(scene.true_poses, scene.sfm_data), 1e-4);
+  EXPECT_LT(testing::MaxRelativeCenterError(scene.true_poses, scene.sfm_data), 1e-4);
   EXPECT_EQ(result.positioning.num_landmarks, tracks.size());
   EXPECT_EQ(result.positioning.num_filtered_observations, 0u);
 }
 
 TEST(TranslationAveraging, TenPercentCorruptedDirectionsAreRejected) {
-  PositioningScene scene = MakePositioningScene({});
+  testing::PositioningScene scene = testing::MakePositioningScene({});
   const size_t num_corrupted = CorruptDirections(&scene.graph, 10, 3);
   const TranslationAveragingResult result = PositionCamerasByTranslationAveraging(
       {}, scene.graph, scene.rotations, BuildTracks(scene.graph).tracks, scene.features, &scene.sfm_data);
   ASSERT_TRUE(result.positioning.success) << result.positioning.message;
-  EXPECT_LT(MaxRelativeCenterError(scene.true_poses, scene.sfm_data), 1e-4);
+  EXPECT_LT(testing::MaxRelativeCenterError(scene.true_poses, scene.sfm_data), 1e-4);
   // Random directions that happen to fall within the threshold stay; the rest go.
   EXPECT_LE(result.num_rejected_edges, num_corrupted);
   EXPECT_GE(result.num_rejected_edges, num_corrupted * 9 / 10);
 }
 
 TEST(TranslationAveraging, DeterministicForASeed) {
-  PositioningSceneOptions options;
-  options.num_cameras = 20;
-  options.num_points = 500;
-  PositioningScene scene = MakePositioningScene(options);
+  testing::PositioningSceneOptions options = testing::SmallSceneOptions();
+  testing::PositioningScene scene = testing::MakePositioningScene(options);
   CorruptDirections(&scene.graph, 10, 5);
   const std::vector<Track> tracks = BuildTracks(scene.graph).tracks;
   SfmData first = scene.sfm_data, second = scene.sfm_data;
@@ -77,7 +70,7 @@ TEST(TranslationAveraging, DeterministicForASeed) {
 }
 
 TEST(TranslationAveraging, FailsWithoutEdges) {
-  PositioningScene scene = MakePositioningScene({});
+  testing::PositioningScene scene = testing::MakePositioningScene({});
   const SfmData before = scene.sfm_data;
   const TranslationAveragingResult result =
       PositionCamerasByTranslationAveraging({}, ViewGraph(), scene.rotations, {}, scene.features, &scene.sfm_data);

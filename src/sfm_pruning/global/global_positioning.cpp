@@ -34,15 +34,12 @@ PositioningResult PositionCamerasAndPoints(const GlobalPositioningOptions& optio
     }
   }
 
-  std::vector<Eigen::Vector3d> positions =
-      RandomPositions(cameras.size() + rays.size(), options.solver.init_cube_half_size, options.solver.seed);
-  const PositioningSolverSummary summary =
-      SolveRayAlignment(options.solver, constraints, 0, "global_positioning", &positions);
-  result.message = summary.termination;
-  result.num_solver_iterations = summary.num_iterations;
-  result.initial_cost = summary.initial_cost;
-  result.final_cost = summary.final_cost;
-  if (!summary.usable) return result;
+  std::vector<Eigen::Vector3d> positions;
+  if (!SolveFromRandomStart(options.solver, cameras.size() + rays.size(), constraints, "global_positioning",
+                            &positions, &result)
+           .usable) {
+    return result;
+  }
 
   std::map<IndexT, Eigen::Vector3d> centers;
   for (size_t c = 0; c < cameras.size(); ++c) centers[cameras[c]] = positions[c];

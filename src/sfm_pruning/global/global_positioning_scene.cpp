@@ -4,6 +4,18 @@
 
 namespace sfm_pruning {
 
+PositioningSolverSummary SolveFromRandomStart(const PositioningSolverOptions& options, size_t num_positions,
+                                              const std::vector<RayConstraint>& constraints, const std::string& stage,
+                                              std::vector<Eigen::Vector3d>* positions, PositioningResult* result) {
+  *positions = RandomPositions(num_positions, options.init_cube_half_size, options.seed);
+  const PositioningSolverSummary summary = SolveRayAlignment(options, constraints, 0, stage, positions);
+  result->message = summary.termination;
+  result->num_solver_iterations = summary.num_iterations;
+  result->initial_cost = summary.initial_cost;
+  result->final_cost = summary.final_cost;
+  return summary;
+}
+
 double RayAngularResidualDeg(const PositioningObservation& observation, const Eigen::Vector3d& center,
                              const Eigen::Vector3d& point) {
   return RadToDeg(AngleBetweenVectors(observation.ray_world, point - center));

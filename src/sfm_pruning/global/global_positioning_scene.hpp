@@ -11,6 +11,7 @@
 #include <Eigen/Core>
 
 #include "sfm_pruning/global/global_positioning_rays.hpp"
+#include "sfm_pruning/global/global_positioning_solver.hpp"
 #include "sfm_pruning/sfm/sfm_data.hpp"
 
 namespace sfm_pruning {
@@ -31,6 +32,13 @@ struct PositioningResult {
   double initial_cost = 0.0;  // solver cost (0.5 * sum of robustified squared residuals)
   double final_cost = 0.0;
 };
+
+// Both methods' solve: positions from the random start of options (seed), SolveRayAlignment with
+// position 0 (the smallest view id) as the translation gauge, and the solver's record (message,
+// iterations, costs) copied into `result`.
+PositioningSolverSummary SolveFromRandomStart(const PositioningSolverOptions& options, size_t num_positions,
+                                              const std::vector<RayConstraint>& constraints, const std::string& stage,
+                                              std::vector<Eigen::Vector3d>* positions, PositioningResult* result);
 
 // Angle in degrees between an observation's world ray and the direction from the camera centre to
 // the point (180 for a point behind the camera, whatever the camera model).

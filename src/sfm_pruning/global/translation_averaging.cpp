@@ -79,15 +79,10 @@ TranslationAveragingResult PositionCamerasByTranslationAveraging(const Translati
     return result;
   }
 
-  std::vector<Eigen::Vector3d> centers =
-      RandomPositions(problem.cameras.size(), options.solver.init_cube_half_size, options.solver.seed);
-  const PositioningSolverSummary summary =
-      SolveRayAlignment(options.solver, problem.constraints, 0, "translation_averaging", &centers);
+  std::vector<Eigen::Vector3d> centers;
+  const PositioningSolverSummary summary = SolveFromRandomStart(
+      options.solver, problem.cameras.size(), problem.constraints, "translation_averaging", &centers, &positioning);
   result.num_rejected_edges = summary.num_rejected;
-  positioning.message = summary.termination;
-  positioning.num_solver_iterations = summary.num_iterations;
-  positioning.initial_cost = summary.initial_cost;
-  positioning.final_cost = summary.final_cost;
   if (!summary.usable) return result;
 
   std::map<IndexT, Eigen::Vector3d> center_of;
