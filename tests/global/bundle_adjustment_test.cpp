@@ -37,10 +37,7 @@ double MaxRotationErrorDeg(const SfmData& truth, const SfmData& aligned) {
 }
 
 Scene NoisyScene() {
-  SceneOptions options;
-  options.noise_px = 1.0;
-  options.outlier_ratio = 0.02;
-  return bundle_test::MakeScene(options);
+  return bundle_test::MakeScene(bundle_test::NoisySceneOptions(1000));
 }
 
 TEST(BundleAdjustment, RecoversPerturbedPosesAndPointsToNoiseLevel) {
@@ -102,10 +99,7 @@ TEST(BundleAdjustment, RefinesPrincipalPoint) {
 }
 
 TEST(BundleAdjustment, SameInputGivesBitwiseSameOutput) {
-  SceneOptions scene_options;
-  scene_options.noise_px = 1.0;
-  scene_options.outlier_ratio = 0.02;
-  scene_options.num_points = 300;
+  const SceneOptions scene_options = bundle_test::NoisySceneOptions(300);
   const Scene scene = bundle_test::MakeScene(scene_options);
   SfmData first = scene.truth;
   bundle_test::PerturbPoses(1.0, 0.01, scene.radius, 11, &first);

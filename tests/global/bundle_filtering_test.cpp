@@ -15,10 +15,7 @@ using bundle_test::Scene;
 using bundle_test::SceneOptions;
 
 TEST(StructureFiltering, RemovesPlantedOutliersAfterBundleAdjustment) {
-  SceneOptions scene_options;
-  scene_options.noise_px = 1.0;
-  scene_options.outlier_ratio = 0.02;
-  scene_options.num_points = 500;
+  const SceneOptions scene_options = bundle_test::NoisySceneOptions(500);
   const Scene scene = bundle_test::MakeScene(scene_options);
   ASSERT_GT(scene.outliers.size(), 100u);
   SfmData data = scene.truth;

@@ -37,10 +37,7 @@ TEST(Retriangulation, RestoresPerturbedPointsFromExactObservations) {
 }
 
 TEST(Retriangulation, NeverIncreasesTheReprojectionError) {
-  SceneOptions scene_options;
-  scene_options.num_points = 300;
-  scene_options.noise_px = 1.0;
-  scene_options.outlier_ratio = 0.02;
+  const SceneOptions scene_options = bundle_test::NoisySceneOptions(300);
   const Scene scene = bundle_test::MakeScene(scene_options);
   SfmData data = scene.truth;
   RetriangulateLandmarks({}, nullptr, &data);

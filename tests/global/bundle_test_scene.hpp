@@ -30,6 +30,15 @@ struct SceneOptions {
   uint32_t seed = 7;
 };
 
+// The tests' usual noisy scene: 1 px noise per coordinate and 2 % outliers at 20 px.
+inline SceneOptions NoisySceneOptions(int num_points) {
+  SceneOptions options;
+  options.noise_px = 1.0;
+  options.outlier_ratio = 0.02;
+  options.num_points = num_points;
+  return options;
+}
+
 struct Scene {
   SfmData truth;     // exact poses, points and intrinsics, with noisy observations
   std::set<std::pair<IndexT, IndexT>> outliers;  // (landmark id, view id)
