@@ -45,17 +45,10 @@ TEST(GlobalPositioning, NoiseAndOutliersStayWithinOnePercent) {
   EXPECT_LT(testing::MaxRelativeCenterError(scene.true_poses, scene.sfm_data), 0.01);
 
   // The angular filter removes most outliers and keeps almost every inlier.
-  size_t num_outliers = 0, num_outliers_kept = 0;
-  for (const auto& [key, outlier] : scene.is_outlier) num_outliers += outlier ? 1 : 0;
-  size_t num_inliers_kept = 0;
-  for (const auto& [landmark_id, landmark] : scene.sfm_data.structure) {
-    for (const auto& [view_id, observation] : landmark.observations) {
-      (scene.is_outlier.at({view_id, observation.id_feat}) ? num_outliers_kept : num_inliers_kept)++;
-    }
-  }
-  EXPECT_GT(result.num_filtered_observations, num_outliers / 2);
-  EXPECT_LT(num_outliers_kept, num_outliers / 5);
-  EXPECT_GT(num_inliers_kept, (scene.is_outlier.size() - num_outliers) * 9 / 10);
+  const testing::KeptObservations kept = testing::CountKeptObservations(scene, scene.sfm_data);
+  EXPECT_GT(result.num_filtered_observations, kept.num_outliers / 2);
+  EXPECT_LT(kept.num_outliers_kept, kept.num_outliers / 5);
+  EXPECT_GT(kept.num_inliers_kept, kept.num_inliers * 9 / 10);
 }
 
 TEST(GlobalPositioning, DeterministicForASeed) {

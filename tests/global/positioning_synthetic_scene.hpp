@@ -143,6 +143,25 @@ inline PositioningScene MakePositioningScene(const PositioningSceneOptions& opti
   return scene;
 }
 
+// How the angular filter sorted the observations: what the scene corrupted vs what was written.
+struct KeptObservations {
+  size_t num_outliers = 0;
+  size_t num_inliers = 0;
+  size_t num_outliers_kept = 0;
+  size_t num_inliers_kept = 0;
+};
+
+inline KeptObservations CountKeptObservations(const PositioningScene& scene, const SfmData& estimate) {
+  KeptObservations counts;
+  for (const auto& [key, outlier] : scene.is_outlier) ++(outlier ? counts.num_outliers : counts.num_inliers);
+  for (const auto& [landmark_id, landmark] : estimate.structure) {
+    for (const auto& [view_id, observation] : landmark.observations) {
+      ++(scene.is_outlier.at({view_id, observation.id_feat}) ? counts.num_outliers_kept : counts.num_inliers_kept);
+    }
+  }
+  return counts;
+}
+
 // Camera-centre error after the best alignment. The rotations are exact and held fixed by both
 // methods, so the estimate differs from the truth by a scale and a translation only (no
 // rotation): c_true ~ s c + t, solved in closed form by least squares. Returns the largest

@@ -58,6 +58,21 @@ TEST(TranslationAveraging, TenPercentCorruptedDirectionsAreRejected) {
   EXPECT_GE(result.num_rejected_edges, num_corrupted * 9 / 10);
 }
 
+TEST(TranslationAveraging, OutlierObservationsAreFilteredFromTheTriangulatedPoints) {
+  testing::PositioningSceneOptions options;
+  options.pixel_noise_std = 1.0;
+  options.outlier_ratio = 0.05;
+  testing::PositioningScene scene = testing::MakePositioningScene(options);
+  const TranslationAveragingResult result = PositionCamerasByTranslationAveraging(
+      {}, scene.graph, scene.rotations, BuildTracks(scene.graph).tracks, scene.features, &scene.sfm_data);
+  ASSERT_TRUE(result.positioning.success) << result.positioning.message;
+  // The directions are exact, so are the centres; the points see the noise and outliers.
+  EXPECT_LT(testing::MaxRelativeCenterError(scene.true_poses, scene.sfm_data), 1e-4);
+  const testing::KeptObservations kept = testing::CountKeptObservations(scene, scene.sfm_data);
+  EXPECT_LT(kept.num_outliers_kept, kept.num_outliers / 5);
+  EXPECT_GT(kept.num_inliers_kept, kept.num_inliers * 95 / 100);
+}
+
 TEST(TranslationAveraging, DeterministicForASeed) {
   testing::PositioningSceneOptions options = testing::SmallSceneOptions();
   testing::PositioningScene scene = testing::MakePositioningScene(options);

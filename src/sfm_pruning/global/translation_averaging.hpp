@@ -37,8 +37,10 @@ struct TranslationAveragingOptions {
   // Loss (0.1 ~ 5.7 deg), edge rejection rounds (5 deg), bounds, random start (seed),
   // iterations, threads.
   PositioningSolverOptions solver;
-  // Points: triangulated from the observations of positioned views, then observations whose ray
-  // misses the point by more than max_angular_residual_deg are dropped (as in global positioning).
+  // Points: triangulated from the observations of positioned views, again from those within
+  // max_angular_residual_deg of that first point (outliers drag a DLT), then observations whose
+  // ray misses the point by more than max_angular_residual_deg are dropped (as in global
+  // positioning).
   TriangulationMethod triangulation = TriangulationMethod::kDlt;
   double max_angular_residual_deg = 3.0;
 };
