@@ -54,12 +54,49 @@ RotationResidualStats SummarizeResiduals(std::vector<double> residuals_deg) {
   return stats;
 }
 
-// One IRLS stage; returns false (with result->failure_reason set) when it failed or when its
-// robust cost rose: each step majorises the cost, so a rise means the linearisation broke down.
+RotationResidualStats ResidualStats(const RotationProblem& problem,
+                                    const std::vector<Eigen::Matrix3d>& rotations,
+                                    std::vector<double>* residuals_deg = nullptr) {
+  const std::vector<Eigen::Vector3d> residuals = RotationResiduals(problem, rotations);
+  std::vector<double> angles_deg(residuals.size());
+  for (size_t k = 0; k < residuals.size(); ++k) angles_deg[k] = RadToDeg(residuals[k].norm());
+  if (residuals_deg != nullptr) *residuals_deg = angles_deg;
+  return SummarizeResiduals(std::move(angles_deg));
+}
+
+RotationIrlsOptions L1StageOptions(const RotationAveragingOptions& options, bool from_tree) {
+  RotationIrlsOptions stage;
+  stage.loss = RotationLoss::kL1;
+  stage.loss_scale_rad = DegToRad(options.l1_residual_floor_deg);
+  stage.max_iterations = options.max_l1_iterations;
+  stage.convergence_tolerance_rad = options.l1_convergence_tolerance_rad;
+  stage.min_relative_cost_decrease = options.l1_min_relative_cost_decrease;
+  // Only the tree leaves residuals at exactly 0 (see RotationIrlsOptions); a caller's estimate
+  // is better served by its own residuals.
+  stage.uniform_first_step = from_tree;
+  stage.linear_solver.relative_tolerance = options.linear_solver_relative_tolerance;
+  stage.linear_solver.max_iterations = options.max_linear_solver_iterations;
+  return stage;
+}
+
+RotationIrlsOptions RobustStageOptions(const RotationAveragingOptions& options) {
+  RotationIrlsOptions stage = L1StageOptions(options, false);
+  stage.loss = RotationLoss::kGemanMcClure;
+  stage.loss_scale_rad = DegToRad(options.irls_loss_scale_deg);
+  stage.max_iterations = options.max_irls_iterations;
+  stage.convergence_tolerance_rad = options.convergence_tolerance_rad;
+  stage.min_relative_cost_decrease = 0.0;  // run to convergence
+  return stage;
+}
+
+// One IRLS stage; false (with result->failure_reason set) when it failed. With
+// `cost_must_not_rise` a rise of the robust cost is reported as divergence: every step of a
+// stage without a uniform first step majorises its cost, so a rise means the linearisation
+// broke down.
 bool RunStage(const RotationProblem& problem, size_t gauge, const RotationIrlsOptions& stage_options,
-              const std::string& stage_name, const ProgressCallback& progress,
-              std::vector<Eigen::Matrix3d>* estimate, RotationIrlsSummary* summary,
-              RotationAveragingResult* result) {
+              const std::string& stage_name, bool cost_must_not_rise,
+              const ProgressCallback& progress, std::vector<Eigen::Matrix3d>* estimate,
+              RotationIrlsSummary* summary, RotationAveragingResult* result) {
   *summary = RefineRotationsIrls(problem, gauge, stage_options, estimate, progress, stage_name);
   result->num_linear_solver_iterations += summary->num_linear_solver_iterations;
   if (summary->failed) {
@@ -67,13 +104,26 @@ bool RunStage(const RotationProblem& problem, size_t gauge, const RotationIrlsOp
     return false;
   }
   constexpr double kCostRiseTolerance = 1e-6;  // relative, above rounding of the sums
-  if (summary->final_cost > summary->initial_cost * (1.0 + kCostRiseTolerance) + 1e-15) {
+  if (cost_must_not_rise &&
+      summary->final_cost > summary->initial_cost * (1.0 + kCostRiseTolerance) + 1e-15) {
     result->failure_reason = stage_name + ": diverged (robust cost rose from " +
                              std::to_string(summary->initial_cost) + " to " +
                              std::to_string(summary->final_cost) + ")";
     return false;
   }
   return true;
+}
+
+// The robust stage; accumulates into the result's IRLS counters (it runs again after filtering).
+bool RunRobustStage(const RotationProblem& problem, size_t gauge,
+                    const RotationAveragingOptions& options, const ProgressCallback& progress,
+                    std::vector<Eigen::Matrix3d>* estimate, RotationAveragingResult* result) {
+  RotationIrlsSummary summary;
+  const bool ok = RunStage(problem, gauge, RobustStageOptions(options), "rotation averaging (IRLS)",
+                           true, progress, estimate, &summary, result);
+  result->num_irls_iterations += summary.num_iterations;
+  result->converged = summary.converged;
+  return ok;
 }
 
 }  // namespace
@@ -109,45 +159,21 @@ RotationAveragingResult EstimateGlobalRotations(ViewGraph* graph,
   result.gauge_view = problem.view_ids[gauge];
 
   // Refinement: L1 stage, then the robust stage.
-  RotationIncrementSolverOptions linear_solver;
-  linear_solver.relative_tolerance = options.linear_solver_relative_tolerance;
-  linear_solver.max_iterations = options.max_linear_solver_iterations;
-  RotationIrlsOptions l1_options;
-  l1_options.loss = RotationLoss::kL1;
-  l1_options.loss_scale_rad = DegToRad(options.l1_residual_floor_deg);
-  l1_options.max_iterations = options.max_l1_iterations;
-  l1_options.convergence_tolerance_rad = options.l1_convergence_tolerance_rad;
-  l1_options.min_relative_cost_decrease = options.l1_min_relative_cost_decrease;
-  l1_options.uniform_first_step = true;
-  l1_options.linear_solver = linear_solver;
-  RotationIrlsOptions robust_options = l1_options;
-  robust_options.loss = RotationLoss::kGemanMcClure;
-  robust_options.loss_scale_rad = DegToRad(options.irls_loss_scale_deg);
-  robust_options.max_iterations = options.max_irls_iterations;
-  robust_options.convergence_tolerance_rad = options.convergence_tolerance_rad;
-  robust_options.min_relative_cost_decrease = 0.0;  // run to convergence
-  robust_options.uniform_first_step = false;  // starts from the L1 estimate: weights are meaningful
-
   RotationIrlsSummary l1_summary;
-  const bool l1_ok = RunStage(problem, gauge, l1_options, "rotation averaging (L1)", progress,
-                              &estimate, &l1_summary, &result);
+  const bool l1_ok = RunStage(problem, gauge, L1StageOptions(options, !result.initialized_from_input),
+                              "rotation averaging (L1)", false, progress, &estimate, &l1_summary,
+                              &result);
   result.num_l1_iterations = l1_summary.num_iterations;
   result.l1_converged = l1_summary.converged;
-  if (!l1_ok) return result;
-  RotationIrlsSummary robust_summary;
-  const bool robust_ok = RunStage(problem, gauge, robust_options, "rotation averaging (IRLS)",
-                                  progress, &estimate, &robust_summary, &result);
-  result.num_irls_iterations = robust_summary.num_iterations;
-  result.converged = robust_summary.converged;
-  if (!robust_ok) return result;
+  if (!l1_ok || !RunRobustStage(problem, gauge, options, progress, &estimate, &result)) {
+    return result;
+  }
 
   // Filtering, then the largest component of what is left.
-  const std::vector<Eigen::Vector3d> residuals = RotationResiduals(problem, estimate);
-  std::vector<double> residuals_deg(residuals.size());
-  for (size_t k = 0; k < residuals.size(); ++k) residuals_deg[k] = RadToDeg(residuals[k].norm());
-  result.residuals_before_filtering = SummarizeResiduals(residuals_deg);
+  std::vector<double> residuals_deg;
+  result.residuals_before_filtering = ResidualStats(problem, estimate, &residuals_deg);
   if (options.filter_edges) {
-    for (size_t k = 0; k < residuals.size(); ++k) {
+    for (size_t k = 0; k < residuals_deg.size(); ++k) {
       if (residuals_deg[k] <= options.max_relative_rotation_error_deg) continue;
       const ViewPair& pair = problem.pairs[k];
       const EdgeInvalidation why{EdgeInvalidReason::kRotationResidual, residuals_deg[k],
@@ -163,18 +189,23 @@ RotationAveragingResult EstimateGlobalRotations(ViewGraph* graph,
                  final_component.dropped.begin(), final_component.dropped.end(),
                  std::back_inserter(result.dropped_views));
 
-  std::vector<double> kept_residuals_deg;
-  for (size_t k = 0; k < residuals.size(); ++k) {
-    if (skeleton.HasValidEdge(problem.pairs[k].first, problem.pairs[k].second)) {
-      kept_residuals_deg.push_back(residuals_deg[k]);
+  // Re-solve on the kept edges: Geman-McClure never gives an outlier exactly zero weight, so
+  // the estimate above still carries a small pull from the edges just filtered.
+  const RotationProblem final_problem = BuildRotationProblem(skeleton);
+  std::vector<Eigen::Matrix3d> final_estimate =
+      DenseRotations(final_problem, RotationsById(problem, estimate));
+  if (!result.filtered_edges.empty() && options.refine_after_filtering) {
+    const bool gauge_kept = std::binary_search(final_problem.view_ids.begin(),
+                                               final_problem.view_ids.end(), result.gauge_view);
+    if (!gauge_kept) result.gauge_view = final_problem.view_ids.front();
+    if (!RunRobustStage(final_problem, DenseIndexOf(final_problem.view_ids, result.gauge_view),
+                        options, progress, &final_estimate, &result)) {
+      return result;
     }
   }
-  result.residuals = SummarizeResiduals(std::move(kept_residuals_deg));
+  result.residuals = ResidualStats(final_problem, final_estimate);
 
-  rotations->clear();
-  for (IndexT id : result.estimated_views) {
-    rotations->emplace(id, estimate[DenseIndexOf(problem.view_ids, id)]);
-  }
+  *rotations = RotationsById(final_problem, final_estimate);
   if (options.remove_dropped_views_from_graph) graph->RemoveNodes(result.dropped_views);
   result.success = true;
   return result;

@@ -6,7 +6,8 @@
 //   4. robust stage: IRLS with Geman-McClure weights of scale irls_loss_scale_deg
 //      (Chatterjee & Govindu, "Robust Relative Rotation Averaging", TPAMI 2018);
 //   5. filtering: invalidate edges whose relative rotation disagrees with the estimate by more
-//      than max_relative_rotation_error_deg (kRotationResidual) and keep the largest component.
+//      than max_relative_rotation_error_deg (kRotationResidual) and keep the largest component;
+//   6. when edges were filtered, the robust stage again on the kept edges.
 // Each IRLS iteration solves a sparse n x n Laplacian for three right-hand sides
 // (rotation_increment_solver.hpp); nothing dense of size n is formed.
 #pragma once
@@ -26,6 +27,9 @@ struct RotationAveragingOptions {
   // Edges whose R_ij is farther than this from R_j R_i^T after refinement are invalidated.
   double max_relative_rotation_error_deg = 10.0;
   bool filter_edges = true;
+  // After filtering, run the robust stage again on the kept edges only (removes the small pull
+  // the filtered outliers still exert through their non-zero Geman-McClure weights).
+  bool refine_after_filtering = true;
   // Erase the views outside the final component (and their edges) from the graph, as
   // KeepLargestComponent does. Off by default: the graph keeps every edge's record and the
   // returned rotations say which views were estimated.
@@ -65,15 +69,17 @@ struct RotationAveragingResult {
   // ("no valid edge", "linear solver failed ...", "diverged ...").
   bool success = false;
   std::string failure_reason;
-  // The robust stage reached convergence_tolerance_rad (the estimate is usable either way).
+  // The last robust stage reached convergence_tolerance_rad (the estimate is usable either way).
   bool converged = false;
   bool l1_converged = false;
   int num_l1_iterations = 0;
-  int num_irls_iterations = 0;
+  int num_irls_iterations = 0;  // both robust runs (before and after filtering)
   int num_linear_solver_iterations = 0;  // CG iterations over all steps and coordinates
 
   bool initialized_from_input = false;   // else from the maximum spanning tree
-  IndexT gauge_view = kUndefinedIndex;   // the view held fixed (the tree root when initialised by it)
+  // The view held fixed: the tree root (rotation = identity) or, with a given initialisation,
+  // the smallest id; the smallest kept id if filtering dropped it.
+  IndexT gauge_view = kUndefinedIndex;
 
   RotationResidualStats residuals_before_filtering;  // every edge of the estimated component
   RotationResidualStats residuals;                   // the valid edges between returned views

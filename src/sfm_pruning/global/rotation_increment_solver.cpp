@@ -4,17 +4,30 @@
 #include <utility>
 
 #include <Eigen/IterativeLinearSolvers>
+#include <Eigen/SparseCholesky>
 #include <Eigen/SparseCore>
 
 namespace sfm_pruning {
+namespace {
+
+// SimplicialLDLT that reports the size of its factor after the symbolic analysis, before any
+// numeric work (Eigen computes the column counts there but does not expose them).
+class SizedLdlt : public Eigen::SimplicialLDLT<Eigen::SparseMatrix<double>> {
+ public:
+  Eigen::Index FactorNonZeros() const { return m_nonZerosPerCol.sum(); }
+};
+
+}  // namespace
 
 struct RotationIncrementSolver::Impl {
   size_t num_views = 0;
   std::vector<RotationEdge> edges;
   size_t gauge = 0;
   Eigen::SparseMatrix<double> laplacian;  // reduced: the gauge's row and column removed
+  bool use_direct = false;
+  SizedLdlt ldlt;
   Eigen::ConjugateGradient<Eigen::SparseMatrix<double>, Eigen::Lower | Eigen::Upper,
-                           Eigen::IncompleteCholesky<double>>
+                           Eigen::IncompleteCholesky<double, Eigen::Lower, Eigen::NaturalOrdering<int>>>
       cg;
 
   bool IsGauge(size_t index) const { return index == gauge; }
@@ -64,9 +77,16 @@ RotationIncrementSolver::RotationIncrementSolver(size_t num_views, std::vector<R
   impl_->laplacian.resize(size, size);
   impl_->laplacian.setFromTriplets(pattern.begin(), pattern.end());
   impl_->laplacian.makeCompressed();
-  impl_->cg.setTolerance(options.relative_tolerance);
-  impl_->cg.setMaxIterations(options.max_iterations);
-  impl_->cg.analyzePattern(impl_->laplacian);
+  if (options.max_direct_factor_nonzeros_per_view > 0.0) {
+    impl_->ldlt.analyzePattern(impl_->laplacian);
+    impl_->use_direct = static_cast<double>(impl_->ldlt.FactorNonZeros()) <=
+                        options.max_direct_factor_nonzeros_per_view * static_cast<double>(size);
+  }
+  if (!impl_->use_direct) {
+    impl_->cg.setTolerance(options.relative_tolerance);
+    impl_->cg.setMaxIterations(options.max_iterations);
+    impl_->cg.analyzePattern(impl_->laplacian);
+  }
 }
 
 RotationIncrementSolver::~RotationIncrementSolver() = default;
@@ -90,17 +110,26 @@ RotationIncrementSolution RotationIncrementSolver::Solve(const std::vector<doubl
         k, [&](Eigen::Index r, Eigen::Index c, double sign) { impl.laplacian.coeffRef(r, c) += sign * w; },
         [&](Eigen::Index r, double sign) { rhs.row(r) += sign * w * targets[k].transpose(); });
   }
-  impl.cg.factorize(impl.laplacian);
-  if (impl.cg.info() != Eigen::Success) return solution;
-
   Eigen::MatrixX3d x = Eigen::MatrixX3d::Zero(impl.laplacian.rows(), 3);
-  solution.success = true;
-  for (int c = 0; c < 3; ++c) {
-    if (rhs.col(c).squaredNorm() == 0.0) continue;  // x = 0; CG's relative test needs b != 0
-    x.col(c) = impl.cg.solve(rhs.col(c));
-    solution.num_iterations += static_cast<int>(impl.cg.iterations());
-    solution.relative_residual = std::max(solution.relative_residual, impl.cg.error());
-    if (impl.cg.info() != Eigen::Success || !x.col(c).allFinite()) solution.success = false;
+  solution.used_direct_solver = impl.use_direct;
+  if (impl.use_direct) {
+    impl.ldlt.factorize(impl.laplacian);
+    if (impl.ldlt.info() != Eigen::Success) return solution;
+    x = impl.ldlt.solve(rhs);
+    solution.success = impl.ldlt.info() == Eigen::Success && x.allFinite();
+    solution.relative_residual =
+        rhs.norm() > 0.0 ? (impl.laplacian * x - rhs).norm() / rhs.norm() : 0.0;
+  } else {
+    impl.cg.factorize(impl.laplacian);
+    if (impl.cg.info() != Eigen::Success) return solution;
+    solution.success = true;
+    for (int c = 0; c < 3; ++c) {
+      if (rhs.col(c).squaredNorm() == 0.0) continue;  // x = 0; CG's relative test needs b != 0
+      x.col(c) = impl.cg.solve(rhs.col(c));
+      solution.num_iterations += static_cast<int>(impl.cg.iterations());
+      solution.relative_residual = std::max(solution.relative_residual, impl.cg.error());
+      if (impl.cg.info() != Eigen::Success || !x.col(c).allFinite()) solution.success = false;
+    }
   }
   for (size_t index = 0; index < impl.num_views; ++index) {
     if (!impl.IsGauge(index)) solution.increments[index] = x.row(impl.Row(index)).transpose();

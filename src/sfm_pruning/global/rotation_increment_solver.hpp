@@ -7,11 +7,16 @@
 // system. The gauge (a global rotation) is fixed by d_gauge = 0, i.e. the gauge row and column
 // are removed, which makes the reduced Laplacian positive definite on a connected graph.
 //
-// Solver: conjugate gradients preconditioned by an incomplete Cholesky factor (Eigen). A direct
-// sparse Cholesky is exact but its fill-in explodes on the expander-like graphs of large
-// unordered collections (random chords leave no small separators); incomplete Cholesky keeps
-// the factor's memory at the matrix's, is exact on trees and chains (no fill), and CG is fast
-// on well-connected graphs. Single-threaded and deterministic.
+// Solver, chosen per problem from the symbolic factorisation (edges only, not weights):
+//   - exact sparse LDL^T (Eigen SimplicialLDLT, AMD ordering) when its factor stays small, which
+//     is the case for chain- and band-like graphs (video, sequential captures). There an
+//     incomplete factor is a poor preconditioner: the Laplacian's condition number grows like
+//     n^2, and dropping even a few fill entries costs CG hundreds of iterations;
+//   - otherwise conjugate gradients preconditioned by an incomplete Cholesky factor (Eigen,
+//     natural ordering, memory of the order of the matrix). The expander-like graphs of large
+//     unordered collections (random chords, no small separators) make the exact factor nearly
+//     dense, but they are well conditioned, so CG needs only a few tens of iterations.
+// Single-threaded and deterministic.
 #pragma once
 
 #include <cstddef>
@@ -25,16 +30,20 @@
 namespace sfm_pruning {
 
 struct RotationIncrementSolverOptions {
-  // CG stops when |L x - b| <= tolerance * |b| for each of the three coordinates.
+  // Use the exact factorisation when its factor has at most this many non-zeros per view
+  // (a band of width b has about b). 0 = always conjugate gradients.
+  double max_direct_factor_nonzeros_per_view = 50.0;
+  // Conjugate gradients stop when |L x - b| <= tolerance * |b| for each of the three coordinates.
   double relative_tolerance = 1e-10;
   // Per coordinate. Incomplete-Cholesky CG needs a few tens on typical view graphs.
   int max_iterations = 1000;
 };
 
 struct RotationIncrementSolution {
-  bool success = false;  // false: preconditioner failure or CG did not reach the tolerance
+  bool success = false;  // false: preconditioner failure, CG missed the tolerance, non-finite
   std::vector<Eigen::Vector3d> increments;  // d_i per dense index (d_gauge = 0)
-  int num_iterations = 0;          // CG iterations, summed over the three coordinates
+  bool used_direct_solver = false;
+  int num_iterations = 0;          // CG iterations, summed over the three coordinates (0 direct)
   double relative_residual = 0.0;  // the largest of the three
 };
 
@@ -43,7 +52,8 @@ struct RotationIncrementSolution {
 // edges) refill the values and refactorise without reordering.
 class RotationIncrementSolver {
  public:
-  // `edges` must connect all `num_views` views (else the system is singular and Solve fails).
+  // `edges` must connect all `num_views` views (one connected component), otherwise the
+  // problem is not defined (the gauge fixes only the gauge view's component).
   RotationIncrementSolver(size_t num_views, std::vector<RotationEdge> edges, size_t gauge_index,
                           const RotationIncrementSolverOptions& options = {});
   ~RotationIncrementSolver();

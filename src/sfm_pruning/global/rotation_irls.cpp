@@ -93,7 +93,10 @@ RotationIrlsSummary RefineRotationsIrls(const RotationProblem& problem, size_t g
       return summary;
     }
 
-    const bool stalled = current.cost - next.cost < options.min_relative_cost_decrease * current.cost;
+    // The uniform first step does not majorise the cost, so it may raise it: not a stall.
+    const bool majorised_step = !(options.uniform_first_step && summary.num_iterations == 0);
+    const bool stalled = majorised_step && current.cost - next.cost <
+                                               options.min_relative_cost_decrease * current.cost;
     *rotations = std::move(updated);
     current = std::move(next);
     ++summary.num_iterations;

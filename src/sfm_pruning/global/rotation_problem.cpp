@@ -25,6 +25,13 @@ std::vector<Eigen::Matrix3d> DenseRotations(const RotationProblem& problem,
   return dense;
 }
 
+std::map<IndexT, Eigen::Matrix3d> RotationsById(const RotationProblem& problem,
+                                                const std::vector<Eigen::Matrix3d>& rotations) {
+  std::map<IndexT, Eigen::Matrix3d> by_id;
+  for (size_t k = 0; k < problem.view_ids.size(); ++k) by_id.emplace_hint(by_id.end(), problem.view_ids[k], rotations[k]);
+  return by_id;
+}
+
 std::vector<Eigen::Vector3d> RotationResiduals(const RotationProblem& problem,
                                                const std::vector<Eigen::Matrix3d>& rotations) {
   std::vector<Eigen::Vector3d> residuals;

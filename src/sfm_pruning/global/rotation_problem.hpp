@@ -41,6 +41,10 @@ RotationProblem BuildRotationProblem(const ViewGraph& graph);
 std::vector<Eigen::Matrix3d> DenseRotations(const RotationProblem& problem,
                                             const std::map<IndexT, Eigen::Matrix3d>& rotations);
 
+// The inverse of DenseRotations: view id -> rotation.
+std::map<IndexT, Eigen::Matrix3d> RotationsById(const RotationProblem& problem,
+                                                const std::vector<Eigen::Matrix3d>& rotations);
+
 // e_ij of every edge (see above), parallel to problem.edges.
 std::vector<Eigen::Vector3d> RotationResiduals(const RotationProblem& problem,
                                                const std::vector<Eigen::Matrix3d>& rotations);
