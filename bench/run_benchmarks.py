@@ -1,0 +1,661 @@
+#!/usr/bin/env python3
+"""PruneSfM benchmark runner (issue 3). Python 3 standard library only.
+
+Runs every engine (PruneSfM's GLOBAL and GLOBAL_PRUNED, and Debian's COLMAP 3.8 as a peer) on
+the synthetic scenes of `prunesfm synth` and on the datasets of ../shared/datasets that have
+ground truth, and writes docs/benchmarks.md (plus a JSON file with the same numbers): pose AUC
+@3/5/10 deg, registered images, wall time per stage, peak memory, time relative to COLMAP.
+
+Every stage is a separate child process started with posix_spawn and reaped with wait4, so its
+wall time and its own peak RSS (ru_maxrss of that child and the descendants it waited for) are
+measured without /usr/bin/time. See bench/README.md for what each stage contains.
+"""
+
+import argparse
+import datetime
+import json
+import os
+import platform
+import re
+import shlex
+import shutil
+import signal
+import sqlite3
+import struct
+import subprocess
+import sys
+import threading
+import time
+from pathlib import Path
+
+REPO = Path(__file__).resolve().parent.parent
+SMALL_SYNTHETIC = ["orbit_symmetric", "street", "courtyard", "clean"]
+LARGE_SYNTHETIC = "sequential_large"
+# Datasets with ground truth: scene name -> folder under <shared>/datasets.
+DATASETS = {
+    "fountain-P11": "strecha/fountain-P11",
+    "Herz-Jesus-P8": "strecha/Herz-Jesus-P8",
+    "castle-P19": "strecha/castle-P19",
+    "templeSparseRing": "middlebury/templeSparseRing",
+}
+OUR_ENGINES = ["GLOBAL", "GLOBAL_PRUNED"]
+ALL_ENGINES = OUR_ENGINES + ["colmap"]
+THRESHOLDS = [3, 5, 10]
+SMOKE_SYNTH_ARGS = ["--num_views", "8"]
+COLMAP_CAMERA_MODEL = "SIMPLE_RADIAL"
+# COLMAP's images and pair ids: pair_id = image_id1 * 2147483647 + image_id2 (image_id1 < image_id2).
+COLMAP_PAIR_BASE = 2147483647
+
+
+# ----------------------------------------------------------------------------------------------
+# Running one stage
+# ----------------------------------------------------------------------------------------------
+
+def run_stage(name, argv, log_path, timeout_s, env=None):
+    """Runs argv with stdout+stderr to log_path; returns the stage record (wall s, peak MB, rc)."""
+    log_path.parent.mkdir(parents=True, exist_ok=True)
+    print(f"  [{name}] {' '.join(shlex.quote(str(a)) for a in argv)}", flush=True)
+    argv = [str(a) for a in argv]
+    with open(log_path, "wb") as log, open(os.devnull, "rb") as devnull:
+        start = time.monotonic()
+        try:
+            pid = os.posix_spawnp(argv[0], argv, env if env is not None else dict(os.environ),
+                                  file_actions=[(os.POSIX_SPAWN_DUP2, devnull.fileno(), 0),
+                                                (os.POSIX_SPAWN_DUP2, log.fileno(), 1),
+                                                (os.POSIX_SPAWN_DUP2, log.fileno(), 2)])
+        except OSError as e:
+            return {"name": name, "seconds": 0.0, "peak_mb": 0.0, "rc": 127, "log": str(log_path),
+                    "error": f"cannot start {argv[0]}: {e}"}
+        timed_out = threading.Event()
+
+        def kill():
+            timed_out.set()
+            try:
+                os.kill(pid, signal.SIGKILL)
+            except ProcessLookupError:
+                pass
+
+        timer = threading.Timer(timeout_s, kill)
+        timer.start()
+        try:
+            _, status, usage = os.wait4(pid, 0)
+        finally:
+            timer.cancel()
+        seconds = time.monotonic() - start
+    rc = os.waitstatus_to_exitcode(status)
+    record = {"name": name, "seconds": round(seconds, 2), "peak_mb": round(usage.ru_maxrss / 1024.0, 1),
+              "rc": rc, "log": str(log_path)}
+    if timed_out.is_set():
+        record["error"] = f"killed after the {timeout_s} s timeout"
+    elif rc != 0:
+        record["error"] = f"exit code {rc}: {last_line(log_path)}"
+    print(f"  [{name}] {seconds:.1f} s, peak {record['peak_mb']:.0f} MB, rc {rc}", flush=True)
+    return record
+
+
+def last_line(path):
+    try:
+        lines = [l.strip() for l in Path(path).read_text(errors="replace").splitlines() if l.strip()]
+    except OSError:
+        return ""
+    return lines[-1][:200] if lines else ""
+
+
+def colmap_env():
+    env = dict(os.environ)
+    env["QT_QPA_PLATFORM"] = "offscreen"
+    return env
+
+
+# ----------------------------------------------------------------------------------------------
+# Tools and machine
+# ----------------------------------------------------------------------------------------------
+
+def find_prunesfm(explicit):
+    if explicit:
+        return Path(explicit).resolve()
+    preferred = REPO / "build" / "release" / "src" / "software" / "prunesfm"
+    if preferred.is_file():
+        return preferred
+    candidates = [p for p in REPO.glob("build*/**/src/software/prunesfm") if p.is_file() and os.access(p, os.X_OK)]
+    if not candidates:
+        sys.exit("run_benchmarks: no prunesfm executable under build*/; build it or pass --prunesfm PATH")
+    return max(candidates, key=lambda p: p.stat().st_mtime)  # the most recently built one
+
+
+def prunesfm_capabilities(prunesfm):
+    """Which of our engines can run: `prunesfm --help` must list the `run` subcommand."""
+    help_text = subprocess.run([str(prunesfm), "--help"], capture_output=True, text=True).stdout
+    has_run = re.search(r"^\s+run\s", help_text, re.MULTILINE) is not None
+    run_help = ""
+    if has_run:
+        run_help = subprocess.run([str(prunesfm), "run", "--help"], capture_output=True, text=True).stdout
+    return {"run": has_run, "num_threads": "--num_threads" in run_help}
+
+
+def colmap_version(colmap):
+    if not colmap:
+        return None
+    out = subprocess.run([colmap, "-h"], capture_output=True, text=True, env=colmap_env()).stdout
+    return out.splitlines()[0].strip() if out else "unknown"
+
+
+def machine_info():
+    cpu = "unknown"
+    try:
+        for line in Path("/proc/cpuinfo").read_text().splitlines():
+            if line.startswith("model name"):
+                cpu = line.split(":", 1)[1].strip()
+                break
+    except OSError:
+        pass
+    mem_gb = None
+    try:
+        for line in Path("/proc/meminfo").read_text().splitlines():
+            if line.startswith("MemTotal:"):
+                mem_gb = round(int(line.split()[1]) / 1024 / 1024, 1)
+    except OSError:
+        pass
+    commit = subprocess.run(["git", "-C", str(REPO), "rev-parse", "--short", "HEAD"],
+                            capture_output=True, text=True).stdout.strip()
+    return {"date": datetime.datetime.now(datetime.timezone.utc).strftime("%Y-%m-%d %H:%M UTC"),
+            "nproc": os.cpu_count(), "cpu": cpu, "mem_gb": mem_gb, "kernel": platform.release(),
+            "python": platform.python_version(), "git_commit": commit,
+            "loadavg_start": " ".join(f"{x:.2f}" for x in os.getloadavg())}
+
+
+# ----------------------------------------------------------------------------------------------
+# Models and evaluation
+# ----------------------------------------------------------------------------------------------
+
+def num_registered(model_dir):
+    images_bin = model_dir / "images.bin"
+    if images_bin.is_file():
+        with open(images_bin, "rb") as f:
+            return struct.unpack("<Q", f.read(8))[0]
+    images_txt = model_dir / "images.txt"
+    if images_txt.is_file():
+        lines = [l for l in images_txt.read_text().splitlines() if l and not l.startswith("#")]
+        return len(lines) // 2
+    return 0
+
+
+def largest_model(sparse_dir):
+    """COLMAP's mapper writes sparse/0, sparse/1, ...: the model with most registered images."""
+    if not sparse_dir.is_dir():
+        return None, 0
+    models = [d for d in sorted(sparse_dir.iterdir()) if d.is_dir() and
+              ((d / "cameras.bin").is_file() or (d / "cameras.txt").is_file())]
+    if not models:
+        return None, 0
+    best = max(models, key=lambda d: (num_registered(d), -int(d.name) if d.name.isdigit() else 0))
+    return best, len(models)
+
+
+def count_gt_images(gt_path):
+    return sum(1 for l in Path(gt_path).read_text().splitlines() if l.strip() and not l.startswith("#"))
+
+
+def evaluate(prunesfm, model_dir, gt_path, out_dir, seed, timeout_s):
+    """Evaluates a model; no model counts as nothing registered (every pair failed: AUC 0)."""
+    num_gt = count_gt_images(gt_path)
+    result = {"registered": 0, "num_gt": num_gt, "auc": {str(t): 0.0 for t in THRESHOLDS},
+              "median_rotation_error_deg": None, "median_position_error": None}
+    if model_dir is None:
+        return result, None
+    json_path = out_dir / "evaluation.json"
+    stage = run_stage("evaluate", [prunesfm, "evaluate", "--estimate", model_dir, "--ground_truth", gt_path,
+                                   "--thresholds", ",".join(map(str, THRESHOLDS)), "--seed", seed,
+                                   "--json", json_path], out_dir / "evaluate.log", timeout_s)
+    if stage["rc"] != 0:
+        # A model sharing no image name with the ground truth is also "nothing registered".
+        return result, stage
+    report = json.loads(json_path.read_text())
+    result["registered"] = report["num_registered_images"]
+    result["num_gt"] = report["num_ground_truth_images"]
+    for entry in report["auc"]:
+        result["auc"][f"{entry['threshold_deg']:g}"] = round(entry["auc_percent"], 2)
+    if report.get("alignment"):
+        result["median_rotation_error_deg"] = round(report["alignment"]["median_rotation_error_deg"], 3)
+        result["median_position_error"] = report["alignment"]["median_position_error"]
+    return result, stage
+
+
+# ----------------------------------------------------------------------------------------------
+# Scenes
+# ----------------------------------------------------------------------------------------------
+
+def copy_database(src, dst):
+    """Copies an SQLite database with its pending write-ahead log (COLMAP 3.8 leaves its changes in
+    database.db-wal at exit: copying the file alone loses them)."""
+    if Path(dst).exists():
+        Path(dst).unlink()
+    with sqlite3.connect(str(src)) as source, sqlite3.connect(str(dst)) as target:
+        source.backup(target)
+    source.close()
+    target.close()
+
+
+def colmap_database_pairs(db_path):
+    with sqlite3.connect(str(db_path)) as db:
+        names = dict(db.execute("SELECT image_id, name FROM images"))
+        pairs = [(pid // COLMAP_PAIR_BASE, pid % COLMAP_PAIR_BASE)
+                 for (pid,) in db.execute("SELECT pair_id FROM matches WHERE rows > 0")]
+    return names, pairs
+
+
+def colmap_camera_summary(db_path):
+    with sqlite3.connect(str(db_path)) as db:
+        rows = list(db.execute("SELECT model, width, height, prior_focal_length FROM cameras"))
+    return {"num_cameras": len(rows), "prior_focal_from_exif": any(r[3] for r in rows)}
+
+
+def prepare_synthetic(args, prunesfm, scene, num_views, work):
+    """`prunesfm synth`: features + putative matches (database.db) + ground truth."""
+    key = scene if num_views is None else f"{scene}@{num_views}"
+    out = work / key
+    extra = SMOKE_SYNTH_ARGS if args.smoke else []
+    if num_views is not None:
+        extra = ["--num_views", num_views]
+    stage = run_stage("synth", [prunesfm, "synth", "--scene", scene, "--output", out, "--seed", args.seed,
+                                "--num_threads", args.threads, *extra], work / f"{key}.synth.log", args.timeout)
+    images = out / "images"  # synth writes no images; COLMAP's mapper only needs the folder to exist
+    if stage["rc"] == 0:
+        images.mkdir(exist_ok=True)
+    return {"key": key, "kind": "synthetic", "database": out / "database.db", "images": images,
+            "gt": out / "ground_truth" / "gt_cameras.txt", "prep": [stage], "shared_stages": [],
+            "ok": stage["rc"] == 0, "error": stage.get("error"),
+            "synth_args": ["--scene", scene, "--seed", str(args.seed), *map(str, extra)]}
+
+
+def prepare_dataset(args, scene, colmap, work):
+    """Real images: COLMAP's feature extraction and exhaustive matching, shared by every engine
+    (PruneSfM has no feature extraction of its own yet)."""
+    folder = Path(args.shared) / "datasets" / DATASETS[scene]
+    images, gt = folder / "images", folder / "gt_cameras.txt"
+    info = {"key": scene, "kind": "dataset", "images": images, "gt": gt, "prep": [], "shared_stages": [],
+            "ok": False, "error": None}
+    if not images.is_dir() or not gt.is_file():
+        info["error"] = f"{folder} has no images/ or gt_cameras.txt"
+        return info
+    if not colmap:
+        info["error"] = "needs colmap for feature extraction and matching (not installed)"
+        return info
+    out = work / scene / "shared"
+    if out.exists():
+        shutil.rmtree(out)
+    out.mkdir(parents=True)
+    db = out / "database.db"
+    t = str(args.threads)
+    extract = run_stage("features", [colmap, "feature_extractor", "--database_path", db, "--image_path", images,
+                                     "--ImageReader.single_camera", "1",
+                                     "--ImageReader.camera_model", COLMAP_CAMERA_MODEL,
+                                     "--SiftExtraction.use_gpu", "0", "--SiftExtraction.num_threads", t,
+                                     "--SiftExtraction.max_image_size", args.max_image_size],
+                        out / "features.log", args.timeout, colmap_env())
+    info["shared_stages"].append(extract)
+    if extract["rc"] != 0:
+        info["error"] = "feature_extractor: " + extract.get("error", "")
+        return info
+    info["camera"] = colmap_camera_summary(db)
+    match = run_stage("match", [colmap, "exhaustive_matcher", "--database_path", db,
+                                "--SiftMatching.use_gpu", "0", "--SiftMatching.num_threads", t],
+                      out / "match.log", args.timeout, colmap_env())
+    info["shared_stages"].append(match)
+    if match["rc"] != 0:
+        info["error"] = "exhaustive_matcher: " + match.get("error", "")
+        return info
+    info["database"] = db
+    info["ok"] = True
+    return info
+
+
+# ----------------------------------------------------------------------------------------------
+# Engines
+# ----------------------------------------------------------------------------------------------
+
+def run_colmap(args, prunesfm, colmap, scene, work):
+    out = work / scene["key"] / "colmap"
+    if out.exists():
+        shutil.rmtree(out)
+    out.mkdir(parents=True)
+    db = out / "database.db"
+    copy_database(scene["database"], db)
+    stages = []
+    t = str(args.threads)
+    if scene["kind"] == "synthetic":
+        # The database holds putative matches but no two-view geometries. COLMAP 3.8's matchers keep
+        # the matches of a pair that already has them and only verify them geometrically.
+        names, pairs = colmap_database_pairs(db)
+        n = len(names)
+        if len(pairs) == n * (n - 1) // 2:
+            argv = [colmap, "exhaustive_matcher", "--database_path", db]
+        else:  # sequential_large: only the putative pairs (exhaustive would match all N^2 pairs)
+            pair_list = out / "pairs.txt"
+            pair_list.write_text("".join(f"{names[a]} {names[b]}\n" for a, b in pairs))
+            argv = [colmap, "matches_importer", "--database_path", db, "--match_list_path", pair_list,
+                    "--match_type", "pairs"]
+        stages.append(run_stage("match", argv + ["--SiftMatching.use_gpu", "0", "--SiftMatching.num_threads", t],
+                                out / "match.log", args.timeout, colmap_env()))
+        if stages[-1]["rc"] != 0:
+            return stages, None, stages[-1]["error"]
+    sparse = out / "sparse"
+    sparse.mkdir()
+    mapper = [colmap, "mapper", "--database_path", db, "--image_path", scene["images"], "--output_path", sparse,
+              "--Mapper.num_threads", t]
+    if scene["kind"] == "synthetic":
+        mapper += ["--Mapper.extract_colors", "0"]  # there are no images to take colours from
+    stages.append(run_stage("map", mapper, out / "map.log", args.timeout, colmap_env()))
+    model, num_models = largest_model(sparse)
+    note = None if num_models <= 1 else f"{num_models} models, the largest evaluated"
+    if stages[-1]["rc"] != 0:
+        note = stages[-1]["error"]
+    return stages, model, note
+
+
+def run_ours(args, prunesfm, caps, engine, scene, work):
+    out = work / scene["key"] / engine
+    if out.exists():
+        shutil.rmtree(out)
+    out.mkdir(parents=True)
+    db = out / "database.db"
+    copy_database(scene["database"], db)
+    result_dir = out / "result"
+    argv = [prunesfm, "run", "--database", db, "--image_path", scene["images"], "--output_path", result_dir,
+            "--engine", engine]
+    if caps["num_threads"]:
+        argv += ["--num_threads", args.threads]
+    stage = run_stage("run", argv, out / "run.log", args.timeout)
+    # Optional: the engine's own breakdown, {"stages": {"name": seconds, ...}} in result/timings.json.
+    timings = result_dir / "timings.json"
+    if timings.is_file():
+        try:
+            stage["breakdown"] = {k: round(float(v), 2) for k, v in json.loads(timings.read_text())["stages"].items()}
+        except (ValueError, KeyError, TypeError):
+            pass
+    model, num_models = largest_model(result_dir / "sparse")
+    note = stage.get("error") or (None if num_models <= 1 else f"{num_models} models, the largest evaluated")
+    return [stage], model, note
+
+
+# ----------------------------------------------------------------------------------------------
+# Report
+# ----------------------------------------------------------------------------------------------
+
+def fmt(value, digits=1):
+    return "–" if value is None else f"{value:.{digits}f}"
+
+
+def stage_cell(row):
+    parts = []
+    for s in row["stages"]:
+        text = f"{s['name']}{'*' if s.get('shared') else ''} {s['seconds']:.1f}"
+        if s.get("breakdown"):
+            text += " (" + ", ".join(f"{k} {v:.1f}" for k, v in s["breakdown"].items()) + ")"
+        parts.append(text)
+    return " · ".join(parts) if parts else "–"
+
+
+def row_status(row):
+    return row.get("status", "ok")
+
+
+def fold_verdict(auc10):
+    if auc10 is None:
+        return None
+    if auc10 >= 90:
+        return "high"
+    if auc10 < 50:
+        return "low"
+    return "partial"
+
+
+def write_markdown(path, meta, rows, scenes):
+    by_scene = {}
+    for row in rows:
+        by_scene.setdefault(row["scene"], []).append(row)
+    engines = [e for e in ALL_ENGINES if any(r["engine"] == e for r in rows)]
+    L = []
+    L.append("# Benchmarks")
+    L.append("")
+    L.append("Generated by `bench/run_benchmarks.py` (do not edit by hand; how to rerun and what every stage "
+             "contains: `bench/README.md`). Every number below comes from the run described here.")
+    L.append("")
+    m = meta["machine"]
+    L.append(f"- Command: `{meta['command']}`")
+    L.append(f"- Date: {m['date']}; git commit `{m['git_commit']}`")
+    L.append(f"- Machine: {m['nproc']} cores ({m['cpu']}), {m['mem_gb']} GB RAM, Linux {m['kernel']}; "
+             f"load average at start {m['loadavg_start']} (the machine is shared: absolute seconds are noisy, "
+             f"compare the ratio column)")
+    L.append(f"- prunesfm: `{meta['prunesfm']}` (`run` subcommand: {'yes' if meta['prunesfm_run'] else 'no'})")
+    L.append(f"- Peer: {meta['colmap_version'] or 'colmap not installed'}; CPU SIFT, "
+             f"{meta['settings']['threads']} threads for every tool; real images: one shared "
+             f"`{COLMAP_CAMERA_MODEL}` camera per dataset (`--ImageReader.single_camera 1`), "
+             f"`--SiftExtraction.max_image_size {meta['settings']['max_image_size']}`, principal point not refined "
+             f"(COLMAP's default), K not given (focal from EXIF when present, else COLMAP's 1.2·max(w, h) prior)")
+    L.append(f"- Seed {meta['settings']['seed']} (synthetic scenes and the evaluation's alignment RANSAC)")
+    L.append("")
+    L.append("Columns: **registered** = images of the evaluated model (the largest one) / ground-truth images; "
+             "**AUC@t** = area under the recall curve of pairwise relative pose errors up to t degrees, unregistered "
+             "images count as failed pairs (`prunesfm evaluate`, docs/evaluation.md); **rot err** = median "
+             "rotation error in degrees after similarity alignment; **stages** = wall seconds per stage (`*` = "
+             "stage shared by all engines of the scene and counted in each total); **total** = sum of the "
+             "stages; **peak MB** = largest peak RSS of any stage; **× colmap** = total / COLMAP's total on the "
+             "same scene in this run. Synthetic-scene generation (`synth`) is input preparation, not counted.")
+    L.append("")
+    # Summary
+    L.append("## Summary: AUC@10 (registered / total)")
+    L.append("")
+    L.append("| scene | " + " | ".join(engines) + " |")
+    L.append("|---|" + "---|" * len(engines))
+    for key in scenes:
+        cells = []
+        for e in engines:
+            r = next((r for r in by_scene.get(key, []) if r["engine"] == e), None)
+            if r is None:
+                cells.append("–")
+            elif row_status(r) != "ok":
+                cells.append(r["status"])
+            else:
+                cells.append(f"{r['auc']['10']:.1f} ({r['registered']}/{r['num_gt']})")
+        L.append(f"| {key} | " + " | ".join(cells) + " |")
+    L.append("")
+    # Observations on the duplicate-structure scenes, from the numbers above.
+    obs = []
+    for key in scenes:
+        r = next((r for r in by_scene.get(key, []) if r["engine"] == "colmap" and row_status(r) == "ok"), None)
+        if r is None or not any(key.startswith(s) for s in SMALL_SYNTHETIC + [LARGE_SYNTHETIC]):
+            continue
+        verdict = fold_verdict(r["auc"]["10"])
+        if key.startswith("clean"):
+            obs.append(f"- `{key}` (control, no twins): COLMAP AUC@10 {r['auc']['10']:.1f} — "
+                       + ("as expected, near perfect." if verdict == "high" else "NOT near perfect: check the scene."))
+        elif verdict == "high":
+            obs.append(f"- `{key}`: COLMAP does **not** fold this scene (AUC@10 {r['auc']['10']:.1f} ≥ 90, "
+                       f"{r['registered']}/{r['num_gt']} registered): the duplicate structure is not hard enough "
+                       "to mislead an incremental mapper.")
+        elif verdict == "low":
+            obs.append(f"- `{key}`: COLMAP is misled (AUC@10 {r['auc']['10']:.1f} < 50, "
+                       f"{r['registered']}/{r['num_gt']} registered).")
+        else:
+            obs.append(f"- `{key}`: COLMAP partly misled (50 ≤ AUC@10 {r['auc']['10']:.1f} < 90, "
+                       f"{r['registered']}/{r['num_gt']} registered).")
+    if obs:
+        L.append("Synthetic scenes, COLMAP (thresholds: ≥ 90 not folded, < 50 misled):")
+        L.append("")
+        L.extend(obs)
+        L.append("")
+    # Per scene
+    for key in scenes:
+        srows = by_scene.get(key, [])
+        if not srows:
+            continue
+        L.append(f"## {key}")
+        L.append("")
+        info = meta["scenes"].get(key, {})
+        if info.get("description"):
+            L.append(info["description"])
+            L.append("")
+        L.append("| engine | registered | AUC@3 | AUC@5 | AUC@10 | rot err (°) | stages (s) | total (s) | peak MB | × colmap |")
+        L.append("|---|---|---|---|---|---|---|---|---|---|")
+        base = next((r for r in srows if r["engine"] == "colmap" and row_status(r) == "ok"), None)
+        for r in sorted(srows, key=lambda r: ALL_ENGINES.index(r["engine"])):
+            if row_status(r) != "ok":
+                note = f" ({r['note']})" if r.get("note") else ""
+                timing = (f" {stage_cell(r)} | {r['total_s']:.1f} | {r['peak_mb']:.0f} |" if r.get("stages")
+                          else " | | |")
+                L.append(f"| {r['engine']} | {r['status']}{note} | | | | |{timing} |")
+                continue
+            ratio = "–"
+            if base is not None and base["total_s"] > 0:
+                ratio = f"{r['total_s'] / base['total_s']:.2f}"
+            L.append(f"| {r['engine']} | {r['registered']}/{r['num_gt']} | {r['auc']['3']:.1f} | "
+                     f"{r['auc']['5']:.1f} | {r['auc']['10']:.1f} | {fmt(r['median_rotation_error_deg'], 2)} | "
+                     f"{stage_cell(r)} | {r['total_s']:.1f} | {r['peak_mb']:.0f} | {ratio} |")
+            if r.get("note"):
+                L.append(f"|  | note: {r['note']} | | | | | | | | |")
+        L.append("")
+    path.parent.mkdir(parents=True, exist_ok=True)
+    tmp = path.with_name(path.name + ".tmp")
+    tmp.write_text("\n".join(L) + "\n")
+    tmp.replace(path)
+
+
+# ----------------------------------------------------------------------------------------------
+# Main
+# ----------------------------------------------------------------------------------------------
+
+def write_reports(args, meta, rows, keys):
+    write_markdown(Path(args.output), meta, rows, keys)
+    Path(args.json).parent.mkdir(parents=True, exist_ok=True)
+    tmp = Path(args.json + ".tmp")
+    tmp.write_text(json.dumps({"meta": meta, "results": rows}, indent=1, default=str) + "\n")
+    tmp.replace(args.json)
+
+
+def parse_args(argv):
+    p = argparse.ArgumentParser(description=__doc__.split("\n\n")[0],
+                                formatter_class=argparse.ArgumentDefaultsHelpFormatter)
+    p.add_argument("--prunesfm", help="prunesfm executable (default: build/release/src/software/prunesfm, "
+                                      "else the newest build*/.../src/software/prunesfm)")
+    p.add_argument("--colmap", default=shutil.which("colmap"), help="colmap executable (peer; skipped if absent)")
+    p.add_argument("--shared", default=str(REPO.parent / "shared"), help="shared data folder")
+    p.add_argument("--work", default="/tmp/prunesfm-bench", help="scratch folder (kept: logs and models)")
+    p.add_argument("--scenes", default=",".join(SMALL_SYNTHETIC + list(DATASETS)),
+                   help="comma-separated synthetic scenes and datasets with ground truth")
+    p.add_argument("--large", metavar="SIZES",
+                   help=f"separate target: only {LARGE_SYNTHETIC} at these view counts, e.g. 1000,2000,5000")
+    p.add_argument("--engines", default=",".join(ALL_ENGINES), help="comma-separated engines")
+    p.add_argument("--seed", type=int, default=0)
+    p.add_argument("--threads", type=int, default=os.cpu_count(), help="threads given to every tool")
+    p.add_argument("--max_image_size", type=int, default=3200, help="COLMAP SiftExtraction.max_image_size")
+    p.add_argument("--timeout", type=int, default=7200, help="seconds before a stage is killed")
+    p.add_argument("--smoke", action="store_true",
+                   help="quick check (< 1 min): clean scene with 8 views; writes into --work unless "
+                        "--output/--json are given")
+    p.add_argument("--output", help="markdown report (default docs/benchmarks.md; "
+                                    "docs/benchmarks_large.md with --large)")
+    p.add_argument("--json", help="machine-readable results (default bench/results.json; "
+                                  "bench/results_large.json with --large)")
+    args = p.parse_args(argv)
+    work = Path(args.work)
+    if args.smoke:
+        args.scenes = "clean"
+        args.output = args.output or str(work / "smoke.md")
+        args.json = args.json or str(work / "smoke.json")
+    elif args.large:
+        args.output = args.output or str(REPO / "docs" / "benchmarks_large.md")
+        args.json = args.json or str(REPO / "bench" / "results_large.json")
+    else:
+        args.output = args.output or str(REPO / "docs" / "benchmarks.md")
+        args.json = args.json or str(REPO / "bench" / "results.json")
+    return args
+
+
+def main(argv):
+    args = parse_args(argv)
+    work = Path(args.work).resolve()
+    work.mkdir(parents=True, exist_ok=True)
+    prunesfm = find_prunesfm(args.prunesfm)
+    caps = prunesfm_capabilities(prunesfm)
+    colmap = args.colmap if args.colmap and Path(args.colmap).exists() else None
+    engines = [e.strip() for e in args.engines.split(",") if e.strip()]
+    for e in engines:
+        if e not in ALL_ENGINES:
+            sys.exit(f"run_benchmarks: unknown engine {e} (known: {', '.join(ALL_ENGINES)})")
+    if args.large:
+        scene_list = [(LARGE_SYNTHETIC, int(n)) for n in args.large.split(",") if n.strip()]
+    else:
+        scene_list = [(s.strip(), None) for s in args.scenes.split(",") if s.strip()]
+        for s, _ in scene_list:
+            if s not in SMALL_SYNTHETIC and s not in DATASETS and s != LARGE_SYNTHETIC:
+                sys.exit(f"run_benchmarks: unknown scene {s} (synthetic: {', '.join(SMALL_SYNTHETIC)}, "
+                         f"{LARGE_SYNTHETIC}; datasets: {', '.join(DATASETS)})")
+    shown_argv = ["bench/run_benchmarks.py"] + argv
+    meta = {"command": " ".join(shlex.quote(a) for a in shown_argv), "machine": machine_info(),
+            "prunesfm": str(prunesfm.relative_to(REPO) if prunesfm.is_relative_to(REPO) else prunesfm),
+            "prunesfm_run": caps["run"], "colmap_version": colmap_version(colmap),
+            "settings": {"seed": args.seed, "threads": args.threads, "max_image_size": args.max_image_size,
+                         "colmap_camera_model": COLMAP_CAMERA_MODEL, "thresholds_deg": THRESHOLDS},
+            "scenes": {}}
+    rows, keys = [], []
+    for name, num_views in scene_list:
+        print(f"== {name}{'' if num_views is None else '@' + str(num_views)}", flush=True)
+        if name in DATASETS:
+            scene = prepare_dataset(args, name, colmap, work)
+            desc = f"Real images: `{DATASETS[name]}` of the shared datasets, ground truth `gt_cameras.txt`."
+            if scene.get("camera"):
+                desc += (" Focal prior from EXIF: " + ("yes." if scene["camera"]["prior_focal_from_exif"]
+                                                        else "no (COLMAP's default prior)."))
+        else:
+            scene = prepare_synthetic(args, prunesfm, name, num_views, work)
+            prep = scene["prep"][0]
+            desc = (f"Synthetic: `prunesfm synth {' '.join(scene['synth_args'])}` "
+                    f"({prep['seconds']:.1f} s, not counted).")
+        keys.append(scene["key"])
+        meta["scenes"][scene["key"]] = {"description": desc, "kind": scene["kind"],
+                                        "prep": scene["prep"], "shared_stages": scene["shared_stages"]}
+        for engine in engines:
+            row = {"scene": scene["key"], "engine": engine, "status": "ok", "note": None}
+            rows.append(row)
+            if engine == "colmap" and not colmap:
+                row["status"] = "not installed"
+                continue
+            if engine in OUR_ENGINES and not caps["run"]:
+                row["status"] = "not built yet"
+                row["note"] = "`prunesfm run` does not exist in this build"
+                continue
+            if not scene["ok"]:
+                row["status"] = "input failed"
+                row["note"] = scene["error"]
+                continue
+            print(f"-- {scene['key']} / {engine}", flush=True)
+            if engine == "colmap":
+                stages, model, note = run_colmap(args, prunesfm, colmap, scene, work)
+            else:
+                stages, model, note = run_ours(args, prunesfm, caps, engine, scene, work)
+            shared = [dict(s, shared=True) for s in scene["shared_stages"]]
+            row["stages"] = shared + stages
+            row["total_s"] = round(sum(s["seconds"] for s in row["stages"]), 2)
+            row["peak_mb"] = max(s["peak_mb"] for s in row["stages"])
+            row["note"] = note
+            if any(s["rc"] != 0 for s in stages):
+                row["status"] = "failed"
+                continue
+            ev, ev_stage = evaluate(prunesfm, model, scene["gt"], work / scene["key"] / engine, args.seed,
+                                    args.timeout)
+            row.update(ev)
+            if model is None:
+                row["note"] = "no model written: nothing registered"
+            elif ev_stage is not None and ev_stage["rc"] != 0:
+                row["note"] = "evaluate failed, counted as nothing registered: " + ev_stage.get("error", "")
+            row["model"] = str(model) if model else None
+            write_reports(args, meta, rows, keys)  # partial results survive an interruption
+    meta["machine"]["loadavg_end"] = " ".join(f"{x:.2f}" for x in os.getloadavg())
+    write_reports(args, meta, rows, keys)
+    print(f"wrote {args.output} and {args.json}")
+    return 0
+
+
+if __name__ == "__main__":
+    sys.exit(main(sys.argv[1:]))
