@@ -1,14 +1,13 @@
 #include "sfm_pruning/global/rotation_averaging.hpp"
 
+#include <gtest/gtest.h>
+
 #include <algorithm>
-#include <chrono>
 #include <iostream>
 #include <iterator>
 #include <set>
 #include <stdexcept>
 #include <string>
-
-#include <gtest/gtest.h>
 
 #include "global/rotation_test_scene.hpp"
 #include "sfm_pruning/view_graph/components.hpp"
@@ -22,6 +21,7 @@ using testing::MaxValue;
 using testing::MeanValue;
 using testing::RotationScene;
 using testing::RotationSceneOptions;
+using testing::SceneOptions;
 
 std::vector<IndexT> Keys(const std::map<IndexT, Eigen::Matrix3d>& rotations) {
   std::vector<IndexT> keys;
@@ -30,8 +30,7 @@ std::vector<IndexT> Keys(const std::map<IndexT, Eigen::Matrix3d>& rotations) {
 }
 
 TEST(EstimateGlobalRotations, NoiseFreeGraphRecoversTruthUpToGlobalRotation) {
-  RotationSceneOptions scene_options;
-  scene_options.num_views = 300;
+  const RotationSceneOptions scene_options = SceneOptions(300, 3);
   RotationScene scene = MakeRotationScene(scene_options);
   std::map<IndexT, Eigen::Matrix3d> rotations;
   const RotationAveragingResult result =
@@ -51,11 +50,7 @@ TEST(EstimateGlobalRotations, NoiseFreeGraphRecoversTruthUpToGlobalRotation) {
 }
 
 TEST(EstimateGlobalRotations, RecoversRotationsWithTwentyPercentCorruptedEdges) {
-  RotationSceneOptions scene_options;
-  scene_options.num_views = 300;
-  scene_options.chords_per_view = 10;
-  scene_options.noise_deg = 0.5;
-  scene_options.outlier_fraction = 0.2;
+  const RotationSceneOptions scene_options = SceneOptions(300, 10, 0.5, 0.2);
   RotationScene scene = MakeRotationScene(scene_options);
   ASSERT_GT(scene.corrupted.size(), 500u);
   std::map<IndexT, Eigen::Matrix3d> rotations;
@@ -69,8 +64,7 @@ TEST(EstimateGlobalRotations, RecoversRotationsWithTwentyPercentCorruptedEdges) 
   EXPECT_LT(MeanValue(errors), 0.1);
   EXPECT_LT(MaxValue(errors), 0.25);
   // Exactly the corrupted edges are filtered, each recorded with its residual.
-  EXPECT_EQ(std::set<ViewPair>(result.filtered_edges.begin(), result.filtered_edges.end()),
-            scene.corrupted);
+  EXPECT_EQ(std::set<ViewPair>(result.filtered_edges.begin(), result.filtered_edges.end()), scene.corrupted);
   for (const ViewPair& pair : result.filtered_edges) {
     const ViewGraphEdge* edge = scene.graph.FindEdge(pair.first, pair.second);
     ASSERT_NE(edge, nullptr);
@@ -94,11 +88,7 @@ TEST(EstimateGlobalRotations, RecoversRotationsWithTwentyPercentCorruptedEdges) 
 }
 
 TEST(EstimateGlobalRotations, IsDeterministic) {
-  RotationSceneOptions scene_options;
-  scene_options.num_views = 150;
-  scene_options.chords_per_view = 4;
-  scene_options.noise_deg = 1.0;
-  scene_options.outlier_fraction = 0.2;
+  const RotationSceneOptions scene_options = SceneOptions(150, 4, 1.0, 0.2);
   RotationScene first = MakeRotationScene(scene_options);
   RotationScene second = MakeRotationScene(scene_options);
   std::map<IndexT, Eigen::Matrix3d> first_rotations;
@@ -131,8 +121,7 @@ TEST(EstimateGlobalRotations, GraphWithoutEdgesReportsFailure) {
     EXPECT_EQ(result.dropped_views.size(), num_nodes);
   }
   // Only invalid edges: the same.
-  RotationSceneOptions scene_options;
-  scene_options.num_views = 5;
+  const RotationSceneOptions scene_options = SceneOptions(5, 3);
   RotationScene scene = MakeRotationScene(scene_options);
   for (const ViewPair& pair : scene.graph.ValidEdgePairs()) {
     scene.graph.InvalidateEdge(pair.first, pair.second, {EdgeInvalidReason::kTooFewInliers, 3, 30});
@@ -189,11 +178,7 @@ TEST(EstimateGlobalRotations, DisconnectedGraphEstimatesLargestComponentOnly) {
 }
 
 TEST(EstimateGlobalRotations, UsesGivenRotationsAsInitialisation) {
-  RotationSceneOptions scene_options;
-  scene_options.num_views = 80;
-  scene_options.chords_per_view = 5;
-  scene_options.noise_deg = 0.5;
-  scene_options.outlier_fraction = 0.2;
+  const RotationSceneOptions scene_options = SceneOptions(80, 5, 0.5, 0.2);
   RotationScene scene = MakeRotationScene(scene_options);
   // The truth in another world frame, each rotation off by 5 degrees.
   std::mt19937 rng(11);
@@ -211,8 +196,7 @@ TEST(EstimateGlobalRotations, UsesGivenRotationsAsInitialisation) {
   EXPECT_EQ(result.gauge_view, scene.truth.begin()->first);  // the smallest id stays fixed
   EXPECT_EQ(rotations.at(result.gauge_view), initial.at(result.gauge_view));
   EXPECT_LT(MeanValue(AlignedRotationErrorsDeg(scene.truth, rotations)), 0.15);
-  EXPECT_EQ(std::set<ViewPair>(result.filtered_edges.begin(), result.filtered_edges.end()),
-            scene.corrupted);
+  EXPECT_EQ(std::set<ViewPair>(result.filtered_edges.begin(), result.filtered_edges.end()), scene.corrupted);
 
   // A partial initialisation is ignored: the spanning tree is used.
   RotationScene again = MakeRotationScene(scene_options);
@@ -228,10 +212,7 @@ TEST(EstimateGlobalRotations, UsesGivenRotationsAsInitialisation) {
 // A threshold far below the noise cuts most edges, and with them views: whatever is cut, the
 // result must stay consistent with the graph.
 TEST(EstimateGlobalRotations, FilteringKeepsLargestRemainingComponent) {
-  RotationSceneOptions scene_options;
-  scene_options.num_views = 60;
-  scene_options.chords_per_view = 2;
-  scene_options.noise_deg = 2.0;
+  const RotationSceneOptions scene_options = SceneOptions(60, 2, 2.0);
   RotationScene scene = MakeRotationScene(scene_options);
   RotationAveragingOptions options;
   options.max_relative_rotation_error_deg = 0.5;
@@ -243,8 +224,8 @@ TEST(EstimateGlobalRotations, FilteringKeepsLargestRemainingComponent) {
 
   EXPECT_EQ(Keys(rotations), result.estimated_views);
   std::vector<IndexT> all;
-  std::set_union(result.estimated_views.begin(), result.estimated_views.end(),
-                 result.dropped_views.begin(), result.dropped_views.end(), std::back_inserter(all));
+  std::set_union(result.estimated_views.begin(), result.estimated_views.end(), result.dropped_views.begin(),
+                 result.dropped_views.end(), std::back_inserter(all));
   EXPECT_EQ(all, Keys(scene.truth));
   EXPECT_EQ(all.size(), result.estimated_views.size() + result.dropped_views.size());
   // The estimated views form one component of the filtered graph.
@@ -267,10 +248,7 @@ TEST(EstimateGlobalRotations, FilteringKeepsLargestRemainingComponent) {
 // Noise-free inliers and 20% outliers. Filtering + the re-solve on the kept edges is exact;
 // without filtering the outliers keep a small pull (Geman-McClure weights never reach 0).
 TEST(EstimateGlobalRotations, FilteringCanBeDisabled) {
-  RotationSceneOptions scene_options;
-  scene_options.num_views = 60;
-  scene_options.chords_per_view = 4;
-  scene_options.outlier_fraction = 0.2;
+  const RotationSceneOptions scene_options = SceneOptions(60, 4, 0.0, 0.2);
   RotationScene filtered = MakeRotationScene(scene_options);
   std::map<IndexT, Eigen::Matrix3d> filtered_rotations;
   const RotationAveragingResult with_filter =
@@ -296,9 +274,7 @@ TEST(EstimateGlobalRotations, FilteringCanBeDisabled) {
 }
 
 TEST(EstimateGlobalRotations, ReportsProgressPerIteration) {
-  RotationSceneOptions scene_options;
-  scene_options.num_views = 50;
-  scene_options.noise_deg = 1.0;
+  const RotationSceneOptions scene_options = SceneOptions(50, 3, 1.0);
   RotationScene scene = MakeRotationScene(scene_options);
   std::map<std::string, int> calls;
   bool within_total = true;
@@ -318,30 +294,15 @@ TEST(EstimateGlobalRotations, ReportsProgressPerIteration) {
 // Scale check at 2,000 views / ~12,000 edges (a dense 6000 x 6000 system would take far
 // longer than this whole test). The 10,000-view benchmark is in rotation_benchmark_test.cpp.
 TEST(EstimateGlobalRotations, TimesTwoThousandViews) {
-  RotationSceneOptions scene_options;
-  scene_options.num_views = 2000;
-  scene_options.chords_per_view = 5;
-  scene_options.noise_deg = 1.0;
-  scene_options.outlier_fraction = 0.1;
-  RotationScene scene = MakeRotationScene(scene_options);
-  std::map<IndexT, Eigen::Matrix3d> rotations;
-  const auto start = std::chrono::steady_clock::now();
-  const RotationAveragingResult result =
-      EstimateGlobalRotations(&scene.graph, RotationAveragingOptions{}, &rotations);
-  const double seconds =
-      std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-  ASSERT_TRUE(result.success) << result.failure_reason;
-  EXPECT_TRUE(result.converged);
-  const std::map<IndexT, double> errors = AlignedRotationErrorsDeg(scene.truth, rotations);
-  EXPECT_LT(MeanValue(errors), 0.25);
-  EXPECT_EQ(std::set<ViewPair>(result.filtered_edges.begin(), result.filtered_edges.end()),
+  RotationScene scene = MakeRotationScene(SceneOptions(2000, 5, 1.0, 0.1));
+  const testing::TimedRotationAveraging run = testing::RunTimedRotationAveraging(&scene);
+  ASSERT_TRUE(run.result.success) << run.result.failure_reason;
+  EXPECT_TRUE(run.result.converged);
+  EXPECT_LT(MeanValue(run.errors_deg), 0.25);
+  EXPECT_EQ(std::set<ViewPair>(run.result.filtered_edges.begin(), run.result.filtered_edges.end()),
             scene.corrupted);
-  RecordProperty("seconds", std::to_string(seconds));
-  std::cout << "2000 views, " << scene.graph.NumEdges() << " edges: " << seconds << " s ("
-            << result.num_l1_iterations << " L1 + " << result.num_irls_iterations
-            << " IRLS iterations, " << result.num_linear_solver_iterations
-            << " CG iterations); error mean " << MeanValue(errors) << " deg, max "
-            << MaxValue(errors) << " deg\n";
+  RecordProperty("seconds", std::to_string(run.seconds));
+  std::cout << run.Summary(scene) << "\n";
 }
 
 }  // namespace

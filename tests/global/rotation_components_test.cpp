@@ -1,8 +1,8 @@
 // The building blocks of rotation averaging: the spanning-tree initialisation, the residual
 // convention, the sparse increment solver and the IRLS losses.
-#include <cmath>
-
 #include <gtest/gtest.h>
+
+#include <cmath>
 
 #include "global/rotation_test_scene.hpp"
 #include "sfm_pruning/global/rotation_increment_solver.hpp"
@@ -94,9 +94,7 @@ TEST(RotationIncrementSolver, TriangleIsTheWeightedLeastSquaresSolution) {
 // The exact factorisation (chosen for sparse factors) and incomplete-Cholesky CG (forced with a
 // zero fill budget) solve the same system.
 TEST(RotationIncrementSolver, DirectAndIterativeSolversAgree) {
-  testing::RotationSceneOptions scene_options;
-  scene_options.num_views = 300;
-  scene_options.chords_per_view = 3;
+  const testing::RotationSceneOptions scene_options = testing::SceneOptions(300, 3);
   const RotationProblem problem = BuildRotationProblem(testing::MakeRotationScene(scene_options).graph);
   std::mt19937 rng(9);
   std::uniform_real_distribution<double> uniform(0.01, 2.0);
@@ -104,7 +102,8 @@ TEST(RotationIncrementSolver, DirectAndIterativeSolversAgree) {
   std::vector<Eigen::Vector3d> targets;
   for (size_t k = 0; k < problem.edges.size(); ++k) {
     weights.push_back(uniform(rng));
-    targets.push_back(Eigen::Vector3d(uniform(rng), uniform(rng), uniform(rng)) - Eigen::Vector3d::Constant(1.0));
+    targets.push_back(Eigen::Vector3d(uniform(rng), uniform(rng), uniform(rng)) -
+                      Eigen::Vector3d::Constant(1.0));
   }
   RotationIncrementSolverOptions direct_options;
   direct_options.max_direct_factor_nonzeros_per_view = 1e9;
@@ -153,8 +152,7 @@ TEST(RotationLoss, WeightIsDerivativeOverResidual) {
 }
 
 TEST(RefineRotationsIrls, ConvergesFromPerturbedStartOnNoiseFreeGraph) {
-  testing::RotationSceneOptions scene_options;
-  scene_options.num_views = 60;
+  const testing::RotationSceneOptions scene_options = testing::SceneOptions(60, 3);
   const testing::RotationScene scene = testing::MakeRotationScene(scene_options);
   const RotationProblem problem = BuildRotationProblem(scene.graph);
   std::vector<Eigen::Matrix3d> rotations = DenseRotations(problem, scene.truth);
@@ -169,8 +167,7 @@ TEST(RefineRotationsIrls, ConvergesFromPerturbedStartOnNoiseFreeGraph) {
   EXPECT_LT(summary.final_cost, summary.initial_cost);
   // View 0 was not perturbed and is the gauge, so no global alignment is needed.
   for (size_t k = 0; k < rotations.size(); ++k) {
-    EXPECT_LT(RadToDeg(LogSO3(rotations[k].transpose() * scene.truth.at(problem.view_ids[k])).norm()),
-              1e-7);
+    EXPECT_LT(RadToDeg(LogSO3(rotations[k].transpose() * scene.truth.at(problem.view_ids[k])).norm()), 1e-7);
   }
 }
 

@@ -4,17 +4,20 @@
 // truth (rotation averaging only recovers rotations up to a global rotation).
 #pragma once
 
+#include <Eigen/Core>
+#include <Eigen/Geometry>
 #include <algorithm>
+#include <chrono>
 #include <cstdint>
 #include <map>
 #include <random>
 #include <set>
+#include <sstream>
+#include <string>
 #include <vector>
 
-#include <Eigen/Core>
-#include <Eigen/Geometry>
-
 #include "sfm_pruning/geometry/so3.hpp"
+#include "sfm_pruning/global/rotation_averaging.hpp"
 #include "sfm_pruning/sfm/pose.hpp"
 #include "sfm_pruning/view_graph/view_graph.hpp"
 
@@ -60,6 +63,17 @@ struct RotationSceneOptions {
   IndexT id_step = 3;
   uint32_t seed = 1;
 };
+
+// The common case: ring + chords, uniform noise on inliers, a fraction of corrupted edges.
+inline RotationSceneOptions SceneOptions(size_t num_views, size_t chords_per_view, double noise_deg = 0.0,
+                                         double outlier_fraction = 0.0) {
+  RotationSceneOptions options;
+  options.num_views = num_views;
+  options.chords_per_view = chords_per_view;
+  options.noise_deg = noise_deg;
+  options.outlier_fraction = outlier_fraction;
+  return options;
+}
 
 struct RotationScene {
   std::map<IndexT, Eigen::Matrix3d> truth;  // world -> camera
@@ -115,8 +129,8 @@ inline RotationScene MakeRotationScene(const RotationSceneOptions& options) {
 
 // Angle (deg) of each estimated rotation to the truth after the best global alignment G
 // (R_est ~ R_true G): G is the chordal mean of R_true^T R_est over the estimated views.
-inline std::map<IndexT, double> AlignedRotationErrorsDeg(
-    const std::map<IndexT, Eigen::Matrix3d>& truth, const std::map<IndexT, Eigen::Matrix3d>& estimate) {
+inline std::map<IndexT, double> AlignedRotationErrorsDeg(const std::map<IndexT, Eigen::Matrix3d>& truth,
+                                                         const std::map<IndexT, Eigen::Matrix3d>& estimate) {
   std::vector<Eigen::Matrix3d> offsets;
   for (const auto& [id, R_est] : estimate) offsets.push_back(truth.at(id).transpose() * R_est);
   const Eigen::Matrix3d G = ChordalMeanRotation(offsets);
@@ -137,6 +151,35 @@ inline double MeanValue(const std::map<IndexT, double>& values) {
   double sum = 0.0;
   for (const auto& [id, value] : values) sum += value;
   return values.empty() ? 0.0 : sum / static_cast<double>(values.size());
+}
+
+struct TimedRotationAveraging {
+  RotationAveragingResult result;
+  std::map<IndexT, Eigen::Matrix3d> rotations;
+  double seconds = 0.0;
+  std::map<IndexT, double> errors_deg;  // AlignedRotationErrorsDeg against the scene's truth
+
+  // One line for the test log: size, time, iterations, accuracy, filtering.
+  std::string Summary(const RotationScene& scene) const {
+    std::ostringstream out;
+    out << scene.truth.size() << " views, " << scene.graph.NumEdges() << " edges: " << seconds << " s ("
+        << result.num_l1_iterations << " L1 + " << result.num_irls_iterations << " IRLS iterations, "
+        << result.num_linear_solver_iterations << " CG iterations); error mean " << MeanValue(errors_deg)
+        << " deg, max " << MaxValue(errors_deg) << " deg; " << result.filtered_edges.size()
+        << " edges filtered, " << scene.corrupted.size() << " corrupted";
+    return out.str();
+  }
+};
+
+// EstimateGlobalRotations on the scene's graph (modified: filtered edges), timed.
+inline TimedRotationAveraging RunTimedRotationAveraging(RotationScene* scene,
+                                                        const RotationAveragingOptions& options = {}) {
+  TimedRotationAveraging run;
+  const auto start = std::chrono::steady_clock::now();
+  run.result = EstimateGlobalRotations(&scene->graph, options, &run.rotations);
+  run.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  if (run.result.success) run.errors_deg = AlignedRotationErrorsDeg(scene->truth, run.rotations);
+  return run;
 }
 
 }  // namespace sfm_pruning::testing

@@ -30,15 +30,13 @@ ViewGraph RotationSkeleton(const ViewGraph& graph) {
   return skeleton;
 }
 
-bool HasEveryView(const std::map<IndexT, Eigen::Matrix3d>& rotations,
-                  const std::vector<IndexT>& view_ids) {
+bool HasEveryView(const std::map<IndexT, Eigen::Matrix3d>& rotations, const std::vector<IndexT>& view_ids) {
   return std::all_of(view_ids.begin(), view_ids.end(),
                      [&rotations](IndexT id) { return rotations.count(id) > 0; });
 }
 
 size_t DenseIndexOf(const std::vector<IndexT>& sorted_ids, IndexT id) {
-  return static_cast<size_t>(std::lower_bound(sorted_ids.begin(), sorted_ids.end(), id) -
-                             sorted_ids.begin());
+  return static_cast<size_t>(std::lower_bound(sorted_ids.begin(), sorted_ids.end(), id) - sorted_ids.begin());
 }
 
 RotationResidualStats SummarizeResiduals(std::vector<double> residuals_deg) {
@@ -48,8 +46,8 @@ RotationResidualStats SummarizeResiduals(std::vector<double> residuals_deg) {
   std::sort(residuals_deg.begin(), residuals_deg.end());
   const size_t n = residuals_deg.size();
   stats.mean_deg = std::accumulate(residuals_deg.begin(), residuals_deg.end(), 0.0) / n;
-  stats.median_deg = n % 2 == 1 ? residuals_deg[n / 2]
-                                : 0.5 * (residuals_deg[n / 2 - 1] + residuals_deg[n / 2]);
+  stats.median_deg =
+      n % 2 == 1 ? residuals_deg[n / 2] : 0.5 * (residuals_deg[n / 2 - 1] + residuals_deg[n / 2]);
   stats.max_deg = residuals_deg.back();
   return stats;
 }
@@ -94,9 +92,9 @@ RotationIrlsOptions RobustStageOptions(const RotationAveragingOptions& options) 
 // stage without a uniform first step majorises its cost, so a rise means the linearisation
 // broke down.
 bool RunStage(const RotationProblem& problem, size_t gauge, const RotationIrlsOptions& stage_options,
-              const std::string& stage_name, bool cost_must_not_rise,
-              const ProgressCallback& progress, std::vector<Eigen::Matrix3d>* estimate,
-              RotationIrlsSummary* summary, RotationAveragingResult* result) {
+              const std::string& stage_name, bool cost_must_not_rise, const ProgressCallback& progress,
+              std::vector<Eigen::Matrix3d>* estimate, RotationIrlsSummary* summary,
+              RotationAveragingResult* result) {
   *summary = RefineRotationsIrls(problem, gauge, stage_options, estimate, progress, stage_name);
   result->num_linear_solver_iterations += summary->num_linear_solver_iterations;
   if (summary->failed) {
@@ -115,12 +113,12 @@ bool RunStage(const RotationProblem& problem, size_t gauge, const RotationIrlsOp
 }
 
 // The robust stage; accumulates into the result's IRLS counters (it runs again after filtering).
-bool RunRobustStage(const RotationProblem& problem, size_t gauge,
-                    const RotationAveragingOptions& options, const ProgressCallback& progress,
-                    std::vector<Eigen::Matrix3d>* estimate, RotationAveragingResult* result) {
+bool RunRobustStage(const RotationProblem& problem, size_t gauge, const RotationAveragingOptions& options,
+                    const ProgressCallback& progress, std::vector<Eigen::Matrix3d>* estimate,
+                    RotationAveragingResult* result) {
   RotationIrlsSummary summary;
-  const bool ok = RunStage(problem, gauge, RobustStageOptions(options), "rotation averaging (IRLS)",
-                           true, progress, estimate, &summary, result);
+  const bool ok = RunStage(problem, gauge, RobustStageOptions(options), "rotation averaging (IRLS)", true,
+                           progress, estimate, &summary, result);
   result->num_irls_iterations += summary.num_iterations;
   result->converged = summary.converged;
   return ok;
@@ -128,8 +126,7 @@ bool RunRobustStage(const RotationProblem& problem, size_t gauge,
 
 }  // namespace
 
-RotationAveragingResult EstimateGlobalRotations(ViewGraph* graph,
-                                                const RotationAveragingOptions& options,
+RotationAveragingResult EstimateGlobalRotations(ViewGraph* graph, const RotationAveragingOptions& options,
                                                 std::map<IndexT, Eigen::Matrix3d>* rotations,
                                                 const ProgressCallback& progress) {
   if (graph == nullptr || rotations == nullptr) {
@@ -161,8 +158,7 @@ RotationAveragingResult EstimateGlobalRotations(ViewGraph* graph,
   // Refinement: L1 stage, then the robust stage.
   RotationIrlsSummary l1_summary;
   const bool l1_ok = RunStage(problem, gauge, L1StageOptions(options, !result.initialized_from_input),
-                              "rotation averaging (L1)", false, progress, &estimate, &l1_summary,
-                              &result);
+                              "rotation averaging (L1)", false, progress, &estimate, &l1_summary, &result);
   result.num_l1_iterations = l1_summary.num_iterations;
   result.l1_converged = l1_summary.converged;
   if (!l1_ok || !RunRobustStage(problem, gauge, options, progress, &estimate, &result)) {
@@ -185,9 +181,8 @@ RotationAveragingResult EstimateGlobalRotations(ViewGraph* graph,
   }
   const LargestComponentSelection final_component = KeepLargestComponent(&skeleton);
   result.estimated_views = final_component.kept;
-  std::set_union(component.dropped.begin(), component.dropped.end(),
-                 final_component.dropped.begin(), final_component.dropped.end(),
-                 std::back_inserter(result.dropped_views));
+  std::set_union(component.dropped.begin(), component.dropped.end(), final_component.dropped.begin(),
+                 final_component.dropped.end(), std::back_inserter(result.dropped_views));
 
   // Re-solve on the kept edges: Geman-McClure never gives an outlier exactly zero weight, so
   // the estimate above still carries a small pull from the edges just filtered.
@@ -195,11 +190,11 @@ RotationAveragingResult EstimateGlobalRotations(ViewGraph* graph,
   std::vector<Eigen::Matrix3d> final_estimate =
       DenseRotations(final_problem, RotationsById(problem, estimate));
   if (!result.filtered_edges.empty() && options.refine_after_filtering) {
-    const bool gauge_kept = std::binary_search(final_problem.view_ids.begin(),
-                                               final_problem.view_ids.end(), result.gauge_view);
+    const bool gauge_kept =
+        std::binary_search(final_problem.view_ids.begin(), final_problem.view_ids.end(), result.gauge_view);
     if (!gauge_kept) result.gauge_view = final_problem.view_ids.front();
-    if (!RunRobustStage(final_problem, DenseIndexOf(final_problem.view_ids, result.gauge_view),
-                        options, progress, &final_estimate, &result)) {
+    if (!RunRobustStage(final_problem, DenseIndexOf(final_problem.view_ids, result.gauge_view), options,
+                        progress, &final_estimate, &result)) {
       return result;
     }
   }

@@ -12,11 +12,10 @@
 // (rotation_increment_solver.hpp); nothing dense of size n is formed.
 #pragma once
 
+#include <Eigen/Core>
 #include <map>
 #include <string>
 #include <vector>
-
-#include <Eigen/Core>
 
 #include "sfm_pruning/util/progress.hpp"
 #include "sfm_pruning/view_graph/view_graph.hpp"
@@ -73,10 +72,10 @@ struct RotationAveragingResult {
   bool converged = false;
   bool l1_converged = false;
   int num_l1_iterations = 0;
-  int num_irls_iterations = 0;  // both robust runs (before and after filtering)
+  int num_irls_iterations = 0;           // both robust runs (before and after filtering)
   int num_linear_solver_iterations = 0;  // CG iterations over all steps and coordinates
 
-  bool initialized_from_input = false;   // else from the maximum spanning tree
+  bool initialized_from_input = false;  // else from the maximum spanning tree
   // The view held fixed: the tree root (rotation = identity) or, with a given initialisation,
   // the smallest id; the smallest kept id if filtering dropped it.
   IndexT gauge_view = kUndefinedIndex;
@@ -97,8 +96,7 @@ struct RotationAveragingResult {
 // invalidated (and, with remove_dropped_views_from_graph, the dropped views erased).
 // Progress stages: "rotation averaging (L1)", "rotation averaging (IRLS)".
 // Throws std::invalid_argument for null pointers.
-RotationAveragingResult EstimateGlobalRotations(ViewGraph* graph,
-                                                const RotationAveragingOptions& options,
+RotationAveragingResult EstimateGlobalRotations(ViewGraph* graph, const RotationAveragingOptions& options,
                                                 std::map<IndexT, Eigen::Matrix3d>* rotations,
                                                 const ProgressCallback& progress = {});
 

@@ -1,11 +1,10 @@
 #include "sfm_pruning/global/rotation_increment_solver.hpp"
 
-#include <algorithm>
-#include <utility>
-
 #include <Eigen/IterativeLinearSolvers>
 #include <Eigen/SparseCholesky>
 #include <Eigen/SparseCore>
+#include <algorithm>
+#include <utility>
 
 namespace sfm_pruning {
 namespace {
@@ -117,8 +116,7 @@ RotationIncrementSolution RotationIncrementSolver::Solve(const std::vector<doubl
     if (impl.ldlt.info() != Eigen::Success) return solution;
     x = impl.ldlt.solve(rhs);
     solution.success = impl.ldlt.info() == Eigen::Success && x.allFinite();
-    solution.relative_residual =
-        rhs.norm() > 0.0 ? (impl.laplacian * x - rhs).norm() / rhs.norm() : 0.0;
+    solution.relative_residual = rhs.norm() > 0.0 ? (impl.laplacian * x - rhs).norm() / rhs.norm() : 0.0;
   } else {
     impl.cg.factorize(impl.laplacian);
     if (impl.cg.info() != Eigen::Success) return solution;

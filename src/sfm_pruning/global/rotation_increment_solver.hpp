@@ -19,11 +19,10 @@
 // Single-threaded and deterministic.
 #pragma once
 
+#include <Eigen/Core>
 #include <cstddef>
 #include <memory>
 #include <vector>
-
-#include <Eigen/Core>
 
 #include "sfm_pruning/global/rotation_problem.hpp"
 

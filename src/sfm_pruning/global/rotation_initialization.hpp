@@ -6,9 +6,8 @@
 // that, the tree only has to put most views near the right answer.
 #pragma once
 
-#include <map>
-
 #include <Eigen/Core>
+#include <map>
 
 #include "sfm_pruning/view_graph/spanning_tree.hpp"
 #include "sfm_pruning/view_graph/view_graph.hpp"

@@ -67,15 +67,14 @@ RotationIrlsSummary RefineRotationsIrls(const RotationProblem& problem, size_t g
   if (options.uniform_first_step) std::fill(current.weights.begin(), current.weights.end(), 1.0);
   const auto max_iterations = static_cast<size_t>(std::max(options.max_iterations, 0));
 
-  RotationIncrementSolver solver(problem.view_ids.size(), problem.edges, gauge_index,
-                                 options.linear_solver);
+  RotationIncrementSolver solver(problem.view_ids.size(), problem.edges, gauge_index, options.linear_solver);
   while (summary.num_iterations < options.max_iterations) {
     const RotationIncrementSolution step = solver.Solve(current.weights, current.residuals);
     summary.num_linear_solver_iterations += step.num_iterations;
     if (!step.success) {
       summary.failed = true;
-      summary.failure_reason = "linear solver failed (relative residual " +
-                               std::to_string(step.relative_residual) + ")";
+      summary.failure_reason =
+          "linear solver failed (relative residual " + std::to_string(step.relative_residual) + ")";
       return summary;
     }
 
@@ -88,23 +87,22 @@ RotationIrlsSummary RefineRotationsIrls(const RotationProblem& problem, size_t g
     WeightedResiduals next = EvaluateResiduals(problem, updated, options);
     if (!std::isfinite(next.cost)) {
       summary.failed = true;
-      summary.failure_reason = "non-finite rotations after iteration " +
-                               std::to_string(summary.num_iterations + 1);
+      summary.failure_reason =
+          "non-finite rotations after iteration " + std::to_string(summary.num_iterations + 1);
       return summary;
     }
 
     // The uniform first step does not majorise the cost, so it may raise it: not a stall.
     const bool majorised_step = !(options.uniform_first_step && summary.num_iterations == 0);
-    const bool stalled = majorised_step && current.cost - next.cost <
-                                               options.min_relative_cost_decrease * current.cost;
+    const bool stalled =
+        majorised_step && current.cost - next.cost < options.min_relative_cost_decrease * current.cost;
     *rotations = std::move(updated);
     current = std::move(next);
     ++summary.num_iterations;
     summary.final_cost = current.cost;
     summary.last_max_increment_rad = max_increment;
     ReportProgress(progress, stage, static_cast<size_t>(summary.num_iterations), max_iterations);
-    if (max_increment < options.convergence_tolerance_rad ||
-        stalled) {
+    if (max_increment < options.convergence_tolerance_rad || stalled) {
       summary.converged = true;
       break;
     }

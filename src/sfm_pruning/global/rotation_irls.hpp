@@ -9,10 +9,9 @@
 // so the robust cost decreases up to linearisation error.
 #pragma once
 
+#include <Eigen/Core>
 #include <string>
 #include <vector>
-
-#include <Eigen/Core>
 
 #include "sfm_pruning/global/rotation_increment_solver.hpp"
 #include "sfm_pruning/global/rotation_problem.hpp"

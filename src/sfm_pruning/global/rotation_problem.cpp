@@ -28,7 +28,8 @@ std::vector<Eigen::Matrix3d> DenseRotations(const RotationProblem& problem,
 std::map<IndexT, Eigen::Matrix3d> RotationsById(const RotationProblem& problem,
                                                 const std::vector<Eigen::Matrix3d>& rotations) {
   std::map<IndexT, Eigen::Matrix3d> by_id;
-  for (size_t k = 0; k < problem.view_ids.size(); ++k) by_id.emplace_hint(by_id.end(), problem.view_ids[k], rotations[k]);
+  for (size_t k = 0; k < problem.view_ids.size(); ++k)
+    by_id.emplace_hint(by_id.end(), problem.view_ids[k], rotations[k]);
   return by_id;
 }
 
@@ -37,8 +38,7 @@ std::vector<Eigen::Vector3d> RotationResiduals(const RotationProblem& problem,
   std::vector<Eigen::Vector3d> residuals;
   residuals.reserve(problem.edges.size());
   for (const RotationEdge& edge : problem.edges) {
-    residuals.push_back(
-        LogSO3(rotations[edge.j].transpose() * edge.relative_rotation * rotations[edge.i]));
+    residuals.push_back(LogSO3(rotations[edge.j].transpose() * edge.relative_rotation * rotations[edge.i]));
   }
   return residuals;
 }

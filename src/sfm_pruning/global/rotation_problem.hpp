@@ -10,11 +10,10 @@
 // keeps the normal equations a scalar graph Laplacian (rotation_increment_solver.hpp).
 #pragma once
 
+#include <Eigen/Core>
 #include <cstddef>
 #include <map>
 #include <vector>
-
-#include <Eigen/Core>
 
 #include "sfm_pruning/sfm/types.hpp"
 #include "sfm_pruning/view_graph/view_graph.hpp"
@@ -22,14 +21,14 @@
 namespace sfm_pruning {
 
 struct RotationEdge {
-  size_t i = 0;  // dense index of ViewPair::first
-  size_t j = 0;  // dense index of ViewPair::second
+  size_t i = 0;                                                     // dense index of ViewPair::first
+  size_t j = 0;                                                     // dense index of ViewPair::second
   Eigen::Matrix3d relative_rotation = Eigen::Matrix3d::Identity();  // R_ij: camera i -> camera j
 };
 
 struct RotationProblem {
-  std::vector<IndexT> view_ids;    // dense index -> view id, increasing
-  std::vector<ViewPair> pairs;     // one per edge, ViewPair order
+  std::vector<IndexT> view_ids;     // dense index -> view id, increasing
+  std::vector<ViewPair> pairs;      // one per edge, ViewPair order
   std::vector<RotationEdge> edges;  // parallel to `pairs`
 };
 
