@@ -1,0 +1,97 @@
+#include "sfm_pruning/pruning/consistency_tests.hpp"
+
+#include <algorithm>
+
+namespace sfm_pruning {
+namespace {
+
+ErrorSummary Summarize(std::vector<double> values) {
+  ErrorSummary summary;
+  summary.count = values.size();
+  if (values.empty()) return summary;
+  std::sort(values.begin(), values.end());
+  const size_t n = values.size();
+  summary.max_deg = values.back();
+  summary.median_deg = n % 2 == 1 ? values[n / 2] : 0.5 * (values[n / 2 - 1] + values[n / 2]);
+  return summary;
+}
+
+void TestLoops(const ViewGraph& graph, const ConsistencyTestOptions& options, ConsistencyReport* report) {
+  const CycleSearchResult search = FindBoundedCycles(graph, options.cycles);
+  report->loop_search_truncated = search.truncated;
+  std::vector<double> errors;
+  errors.reserve(search.cycles.size());
+  for (const ViewCycle& cycle : search.cycles) {
+    const double error_deg = LoopRotationErrorDeg(graph, cycle);
+    const double threshold_deg = LoopRotationThresholdDeg(cycle.size(), options.loop_step_deg);
+    errors.push_back(error_deg);
+    if (error_deg > threshold_deg) {
+      ConsistencyViolation violation;
+      violation.test = ConsistencyTest::kLoop;
+      violation.loop = cycle;
+      violation.value_deg = error_deg;
+      violation.threshold_deg = threshold_deg;
+      report->violations.push_back(std::move(violation));
+    }
+  }
+  report->loop_error = Summarize(std::move(errors));
+}
+
+void TestRelativeToAbsolute(const ViewGraph& graph, const SubgraphSolution& solution,
+                            const ConsistencyTestOptions& options, ConsistencyReport* report) {
+  std::vector<double> rotation_errors;
+  std::vector<double> translation_errors;
+  std::vector<ConsistencyViolation> translation_violations;
+  graph.ForEachValidEdge([&](const ViewPair& pair, const ViewGraphEdge& edge) {
+    const auto pose_i = solution.poses.find(pair.first);
+    const auto pose_j = solution.poses.find(pair.second);
+    if (pose_i == solution.poses.end() || pose_j == solution.poses.end()) {
+      ++report->num_unposed_edges;
+      return;
+    }
+    const RelativePose implied = RelativePoseBetween(pose_i->second, pose_j->second);
+    if (options.test_relative_rotation) {
+      const double e_r = RadToDeg(RotationAngleBetween(edge.relative_pose.rotation, implied.rotation));
+      rotation_errors.push_back(e_r);
+      if (e_r > options.max_relative_rotation_error_deg) {
+        report->violations.push_back({ConsistencyTest::kRelativeRotation, pair, {}, e_r,
+                                      options.max_relative_rotation_error_deg});
+      }
+    }
+    if (options.test_relative_translation && edge.relative_pose.translation.norm() > options.min_translation_norm &&
+        implied.translation.norm() > options.min_translation_norm) {
+      const double e_t = RadToDeg(AngleBetweenVectors(edge.relative_pose.translation, implied.translation));
+      translation_errors.push_back(e_t);
+      if (e_t > options.max_relative_translation_error_deg) {
+        report->violations.push_back({ConsistencyTest::kRelativeTranslation, pair, {}, e_t,
+                                      options.max_relative_translation_error_deg});
+      }
+    }
+  });
+  report->relative_rotation_error = Summarize(std::move(rotation_errors));
+  report->relative_translation_error = Summarize(std::move(translation_errors));
+}
+
+}  // namespace
+
+const char* ConsistencyTestName(ConsistencyTest test) {
+  switch (test) {
+    case ConsistencyTest::kLoop: return "loop";
+    case ConsistencyTest::kRelativeRotation: return "relative_rotation";
+    case ConsistencyTest::kRelativeTranslation: return "relative_translation";
+  }
+  return "unknown";
+}
+
+ConsistencyReport TestSubgraphConsistency(const ViewGraph& graph, const SubgraphSolution& solution,
+                                          const ConsistencyTestOptions& options) {
+  ConsistencyReport report;
+  if (options.test_loops) TestLoops(graph, options, &report);
+  if (options.test_relative_rotation || options.test_relative_translation) {
+    TestRelativeToAbsolute(graph, solution, options, &report);
+  }
+  report.consistent = report.violations.empty();
+  return report;
+}
+
+}  // namespace sfm_pruning

@@ -1,0 +1,258 @@
+#include "sfm_pruning/pruning/subgraph_alignment.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <numeric>
+#include <optional>
+#include <random>
+
+#include "sfm_pruning/geometry/so3.hpp"
+
+namespace sfm_pruning {
+namespace {
+
+using Options = SubgraphAlignmentOptions;
+
+struct Hypothesis {
+  double beta = 1.0;
+  Eigen::Matrix3d mean_rotation = Eigen::Matrix3d::Identity();
+  Eigen::Vector3d mean_log_rotation = Eigen::Vector3d::Zero();  // kPaperTangentMean
+  Eigen::Vector3d mean_translation = Eigen::Vector3d::Zero();
+};
+
+struct Deviation {
+  double rotation_deg = 0.0;
+  double translation = 0.0;
+};
+
+// β*, t̄ and r̄ of a sample; empty when the sample has no scale information or β* ≤ 0 (a negative
+// scale would mirror k2).
+std::optional<Hypothesis> FitHypothesis(const std::vector<ChainedRelativePose>& chains,
+                                        const std::vector<size_t>& sample, const Options& options) {
+  std::vector<ChainedRelativePose> sampled;
+  sampled.reserve(sample.size());
+  for (size_t index : sample) sampled.push_back(chains[index]);
+  const std::optional<double> beta = SolveChainScale(sampled);
+  if (!beta || !(*beta > 0.0)) return std::nullopt;
+  Hypothesis hypothesis;
+  hypothesis.beta = *beta;
+  std::vector<Eigen::Matrix3d> rotations;
+  for (const ChainedRelativePose& chain : sampled) {
+    hypothesis.mean_translation += chain.Translation(*beta);
+    hypothesis.mean_log_rotation += LogSO3(chain.rotation);
+    rotations.push_back(chain.rotation);
+  }
+  hypothesis.mean_translation /= static_cast<double>(sampled.size());
+  hypothesis.mean_log_rotation /= static_cast<double>(sampled.size());
+  if (options.rotation_deviation == Options::RotationDeviation::kGeodesicMean) {
+    hypothesis.mean_rotation = GeodesicMeanRotation(rotations).rotation;
+  } else {
+    hypothesis.mean_rotation = ExpSO3(hypothesis.mean_log_rotation);
+  }
+  return hypothesis;
+}
+
+Deviation MeasureDeviation(const ChainedRelativePose& chain, const Hypothesis& hypothesis, const Options& options) {
+  Deviation deviation;
+  deviation.rotation_deg =
+      options.rotation_deviation == Options::RotationDeviation::kGeodesicMean
+          ? RadToDeg(RotationAngleBetween(hypothesis.mean_rotation, chain.rotation))
+          : RadToDeg((LogSO3(chain.rotation) - hypothesis.mean_log_rotation).norm());
+  deviation.translation = (chain.Translation(hypothesis.beta) - hypothesis.mean_translation).norm();
+  return deviation;
+}
+
+struct Consensus {
+  std::vector<bool> inlier;
+  size_t count = 0;
+  double total_error = 0.0;  // Σ over inliers of E_r / thr_r + E_t / thr_t
+};
+
+Consensus CountConsensus(const std::vector<ChainedRelativePose>& chains, const Hypothesis& hypothesis,
+                         const Options& options) {
+  Consensus consensus;
+  consensus.inlier.assign(chains.size(), false);
+  const double translation_threshold = options.max_translation_deviation_fraction * hypothesis.mean_translation.norm();
+  for (size_t k = 0; k < chains.size(); ++k) {
+    const Deviation deviation = MeasureDeviation(chains[k], hypothesis, options);
+    if (deviation.rotation_deg <= options.max_rotation_deviation_deg && deviation.translation <= translation_threshold) {
+      consensus.inlier[k] = true;
+      ++consensus.count;
+      consensus.total_error += deviation.rotation_deg / std::max(options.max_rotation_deviation_deg, 1e-300) +
+                               deviation.translation / std::max(translation_threshold, 1e-300);
+    }
+  }
+  return consensus;
+}
+
+size_t SampleSize(size_t num_voting, const Options& options) {
+  const auto fraction = static_cast<size_t>(std::floor(options.sample_fraction * static_cast<double>(num_voting)));
+  return std::min(num_voting, std::max(options.min_sample_size, fraction));
+}
+
+void ApplyPolicyToVoters(SubgraphAlignmentResult* result, InterSubgraphVerdict verdict, bool keep) {
+  for (InterSubgraphEdgeDecision& decision : result->edges) {
+    if (!decision.voted) continue;
+    decision.verdict = verdict;
+    decision.kept = keep;
+  }
+}
+
+// Runs RANSAC over the voting edges and writes the verdicts of the voters into `result`.
+void RunRansac(const std::vector<ChainedRelativePose>& chains, const std::vector<size_t>& voter_edge_index,
+               const Options& options, SubgraphAlignmentResult* result) {
+  const size_t n = chains.size();
+  result->sample_size = SampleSize(n, options);
+  std::mt19937_64 rng(options.seed);
+  std::vector<size_t> order(n);
+  std::optional<Hypothesis> best;
+  Consensus best_consensus;
+  for (int iteration = 0; iteration < options.num_iterations; ++iteration) {
+    std::iota(order.begin(), order.end(), size_t{0});
+    for (size_t k = 0; k < result->sample_size; ++k) {  // partial Fisher–Yates
+      std::uniform_int_distribution<size_t> pick(k, n - 1);
+      std::swap(order[k], order[pick(rng)]);
+    }
+    std::vector<size_t> sample(order.begin(), order.begin() + static_cast<std::ptrdiff_t>(result->sample_size));
+    std::sort(sample.begin(), sample.end());
+    const std::optional<Hypothesis> hypothesis = FitHypothesis(chains, sample, options);
+    if (!hypothesis) continue;
+    ++result->num_valid_hypotheses;
+    Consensus consensus = CountConsensus(chains, *hypothesis, options);
+    const bool better = !best || consensus.count > best_consensus.count ||
+                        (consensus.count == best_consensus.count && consensus.total_error < best_consensus.total_error);
+    if (better) {
+      best = hypothesis;
+      best_consensus = std::move(consensus);
+      result->best_iteration = iteration;
+    }
+  }
+  if (!best) {
+    result->status = SubgraphAlignmentStatus::kNoValidHypothesis;
+    ApplyPolicyToVoters(result, InterSubgraphVerdict::kUnjudged, true);
+    return;
+  }
+  result->status = SubgraphAlignmentStatus::kAligned;
+  result->beta = best->beta;
+  result->mean_rotation = best->mean_rotation;
+  result->mean_translation = best->mean_translation;
+  const double translation_threshold = options.max_translation_deviation_fraction * best->mean_translation.norm();
+  for (size_t k = 0; k < n; ++k) {
+    InterSubgraphEdgeDecision& decision = result->edges[voter_edge_index[k]];
+    const Deviation deviation = MeasureDeviation(chains[k], *best, options);
+    decision.rotation_deviation_deg = deviation.rotation_deg;
+    decision.translation_deviation = deviation.translation;
+    decision.translation_threshold = translation_threshold;
+    decision.kept = best_consensus.inlier[k];
+    decision.verdict = decision.kept ? InterSubgraphVerdict::kConsistent
+                       : deviation.rotation_deg > options.max_rotation_deviation_deg
+                           ? InterSubgraphVerdict::kRotationDeviation
+                           : InterSubgraphVerdict::kTranslationDeviation;
+  }
+}
+
+}  // namespace
+
+const char* SubgraphAlignmentStatusName(SubgraphAlignmentStatus status) {
+  switch (status) {
+    case SubgraphAlignmentStatus::kNoEdges: return "no_edges";
+    case SubgraphAlignmentStatus::kAligned: return "aligned";
+    case SubgraphAlignmentStatus::kTooFewVotingEdges: return "too_few_voting_edges";
+    case SubgraphAlignmentStatus::kNoValidHypothesis: return "no_valid_hypothesis";
+  }
+  return "unknown";
+}
+
+const char* InterSubgraphVerdictName(InterSubgraphVerdict verdict) {
+  switch (verdict) {
+    case InterSubgraphVerdict::kConsistent: return "consistent";
+    case InterSubgraphVerdict::kRotationDeviation: return "rotation_deviation";
+    case InterSubgraphVerdict::kTranslationDeviation: return "translation_deviation";
+    case InterSubgraphVerdict::kCannotVote: return "cannot_vote";
+    case InterSubgraphVerdict::kFewEdges: return "few_edges";
+    case InterSubgraphVerdict::kUnjudged: return "unjudged";
+  }
+  return "unknown";
+}
+
+std::vector<ViewPair> SubgraphAlignmentResult::KeptEdges() const {
+  std::vector<ViewPair> kept;
+  for (const auto& decision : edges) {
+    if (decision.kept) kept.push_back({decision.placement.view_i, decision.placement.view_j});
+  }
+  return kept;
+}
+
+std::vector<ViewPair> SubgraphAlignmentResult::RemovedEdges() const {
+  std::vector<ViewPair> removed;
+  for (const auto& decision : edges) {
+    if (!decision.kept) removed.push_back({decision.placement.view_i, decision.placement.view_j});
+  }
+  return removed;
+}
+
+EdgeInvalidation InterSubgraphInvalidation(const InterSubgraphEdgeDecision& decision, const Options& options) {
+  EdgeInvalidation why;
+  if (decision.kept) return why;
+  switch (decision.verdict) {
+    case InterSubgraphVerdict::kRotationDeviation:
+      return {EdgeInvalidReason::kInterSubgraphInconsistent, decision.rotation_deviation_deg,
+              options.max_rotation_deviation_deg};
+    case InterSubgraphVerdict::kTranslationDeviation: {
+      const double relative = decision.translation_threshold > 0.0
+                                  ? decision.translation_deviation * options.max_translation_deviation_fraction /
+                                        decision.translation_threshold
+                                  : decision.translation_deviation;
+      return {EdgeInvalidReason::kInterSubgraphInconsistent, relative, options.max_translation_deviation_fraction};
+    }
+    case InterSubgraphVerdict::kCannotVote:
+      return {EdgeInvalidReason::kOther, static_cast<double>(decision.placement.num_correspondences),
+              static_cast<double>(options.placement.min_correspondences)};
+    case InterSubgraphVerdict::kFewEdges:
+      return {EdgeInvalidReason::kOther, 0.0, static_cast<double>(options.min_edges_for_ransac)};
+    default:
+      return {EdgeInvalidReason::kOther, 0.0, 0.0};
+  }
+}
+
+SubgraphAlignmentResult AlignSubgraphPair(const ViewGraph& graph, const SubgraphSolution& k1,
+                                          const SubgraphSolution& k2, const SfmData& views_and_intrinsics,
+                                          const FeaturesPerView& features, const Options& options) {
+  SubgraphAlignmentResult result;
+  const std::vector<ViewPair> connecting = ConnectingEdges(graph, k1.view_ids, k2.view_ids);
+  if (connecting.empty()) return result;
+
+  const std::map<ObservationKey, IndexT> landmarks_k1 = IndexLandmarksByObservation(k1);
+  const Pose mean_k1 = SubgraphMeanPose(k1);
+  const Pose mean_k2 = SubgraphMeanPose(k2);
+  std::vector<ChainedRelativePose> chains;
+  std::vector<size_t> voter_edge_index;
+  for (const ViewPair& edge : connecting) {
+    InterSubgraphEdgeDecision decision;
+    decision.placement = PlaceViewInSubgraph(graph, edge.first, edge.second, k1, landmarks_k1, views_and_intrinsics,
+                                             features, options.placement);
+    const auto pose_j_in_k2 = k2.poses.find(edge.second);
+    decision.j_posed_in_k2 = pose_j_in_k2 != k2.poses.end();
+    decision.voted = decision.placement.status == EdgePlacementStatus::kPlaced && decision.j_posed_in_k2;
+    if (decision.voted) {
+      chains.push_back(ChainRelativePose(mean_k1, decision.placement.pose_j_in_k1, pose_j_in_k2->second, mean_k2,
+                                         options.scale_application));
+      voter_edge_index.push_back(result.edges.size());
+    } else {
+      decision.verdict = InterSubgraphVerdict::kCannotVote;
+      decision.kept = options.non_voting_edges == Options::NonVotingPolicy::kKeep;
+    }
+    result.edges.push_back(decision);
+  }
+  result.num_voting_edges = chains.size();
+  if (chains.size() < std::max<size_t>(options.min_edges_for_ransac, 2)) {
+    result.status = SubgraphAlignmentStatus::kTooFewVotingEdges;
+    ApplyPolicyToVoters(&result, InterSubgraphVerdict::kFewEdges,
+                        options.few_edges == Options::FewEdgesPolicy::kKeepAll);
+    return result;
+  }
+  RunRansac(chains, voter_edge_index, options, &result);
+  return result;
+}
+
+}  // namespace sfm_pruning

@@ -1,0 +1,121 @@
+// Inter-subgraph edge pruning for one pair of subgraphs (k1, k2) (paper, "Inter-Subgraph Edge
+// Pruning"; METHOD.md §4; docs/pruning.md):
+//   1. every connecting edge <i, j> (i in k1, j in k2) places j in k1's frame by EPnP
+//      (subgraph_edge_placement.hpp); edges that cannot be placed do not vote;
+//   2. each voting edge gives the chained relative pose c1 -> i -> j -> c2 between the mean
+//      poses, its translation affine in the scale β (chained_relative_pose.hpp);
+//   3. RANSAC, num_iterations rounds: draw floor(sample_fraction · N) voting edges (at least
+//      min_sample_size), fit β* and the sample means (rotation r̄, translation t̄), and count
+//      every voting edge with E_r ≤ max_rotation_deviation_deg and
+//      E_t = |t_e(β*) − t̄| ≤ max_translation_deviation_fraction · |t̄|. The largest consensus
+//      set is kept (ties: lowest total normalised error, then the earliest round); the other
+//      voting edges are removed, each with its measured E_r / E_t under that hypothesis.
+// The function only decides; invalidating the removed edges in the view graph is the caller's
+// (InterSubgraphInvalidation gives the EdgeInvalidation to record).
+#pragma once
+
+#include <cstddef>
+#include <cstdint>
+#include <vector>
+
+#include <Eigen/Core>
+
+#include "sfm_pruning/pruning/chained_relative_pose.hpp"
+#include "sfm_pruning/pruning/subgraph_edge_placement.hpp"
+#include "sfm_pruning/pruning/subgraph_solution.hpp"
+#include "sfm_pruning/view_graph/view_graph_edge.hpp"
+
+namespace sfm_pruning {
+
+struct SubgraphAlignmentOptions {
+  EdgePlacementOptions placement;
+  ScaleApplication scale_application = ScaleApplication::kSubgraphFrame;
+
+  // How E_r is measured. kGeodesicMean (default): E_r = angle(R̄, R_e), R̄ the Karcher mean of
+  // the sample's chained rotations. kPaperTangentMean: the paper's |Log(R_e) − mean Log(R_s)|,
+  // identical to first order but wrong when the chained rotation is near 180° (the Log jumps
+  // from ω to −ω there, and c1 -> c2 is a physical rotation that can be anything).
+  enum class RotationDeviation { kGeodesicMean, kPaperTangentMean };
+  RotationDeviation rotation_deviation = RotationDeviation::kGeodesicMean;
+
+  int num_iterations = 30;          // paper: 30 (ablation 20 / 40)
+  double sample_fraction = 0.4;     // of the voting edges, rounded down
+  size_t min_sample_size = 2;       // β needs two edges
+  double max_rotation_deviation_deg = 5.0;           // E_r
+  double max_translation_deviation_fraction = 0.05;  // E_t / |t̄|
+  uint64_t seed = 0;                // RANSAC sampler (std::mt19937_64)
+
+  // Pairs with fewer voting edges than this are not tested by RANSAC (the paper is silent).
+  // With 1–2 votes there is no majority to tell the wrong edge from the right one.
+  size_t min_edges_for_ransac = 3;
+  enum class FewEdgesPolicy { kKeepAll, kRemoveAll };
+  FewEdgesPolicy few_edges = FewEdgesPolicy::kKeepAll;
+
+  // Edges that cannot vote (too few 2D–3D correspondences, failed PnP, j unposed in k2).
+  enum class NonVotingPolicy { kKeep, kRemove };
+  NonVotingPolicy non_voting_edges = NonVotingPolicy::kKeep;
+};
+
+enum class SubgraphAlignmentStatus {
+  kNoEdges,             // the subgraphs are not connected
+  kAligned,             // RANSAC ran and found a hypothesis
+  kTooFewVotingEdges,   // fewer than min_edges_for_ransac voting edges; few_edges policy applied
+  kNoValidHypothesis,   // every sample was degenerate (no scale, β ≤ 0): voting edges kept
+};
+
+const char* SubgraphAlignmentStatusName(SubgraphAlignmentStatus status);
+
+enum class InterSubgraphVerdict {
+  kConsistent,            // kept: in the consensus set
+  kRotationDeviation,     // removed: E_r above the threshold
+  kTranslationDeviation,  // removed: E_r fine, E_t above the threshold
+  kCannotVote,            // kept or removed by non_voting_edges
+  kFewEdges,              // kept or removed by few_edges
+  kUnjudged,              // kept: no valid RANSAC hypothesis
+};
+
+const char* InterSubgraphVerdictName(InterSubgraphVerdict verdict);
+
+struct InterSubgraphEdgeDecision {
+  EdgePlacement placement;  // view_i in k1, view_j in k2, PnP outcome
+  bool j_posed_in_k2 = true;  // false: no P̂_j^k2, the edge cannot vote even when placed
+  bool voted = false;         // placed and posed: took part in RANSAC
+  bool kept = true;
+  InterSubgraphVerdict verdict = InterSubgraphVerdict::kConsistent;
+  // Under the selected hypothesis (0 when the edge did not vote or no hypothesis exists).
+  double rotation_deviation_deg = 0.0;
+  double translation_deviation = 0.0;  // k1 units
+  double translation_threshold = 0.0;  // max_translation_deviation_fraction · |t̄|
+};
+
+struct SubgraphAlignmentResult {
+  SubgraphAlignmentStatus status = SubgraphAlignmentStatus::kNoEdges;
+  // The selected hypothesis (kAligned only): scale k2 -> k1, mean chained rotation and
+  // translation c1 -> c2 in k1 units.
+  double beta = 1.0;
+  Eigen::Matrix3d mean_rotation = Eigen::Matrix3d::Identity();
+  Eigen::Vector3d mean_translation = Eigen::Vector3d::Zero();
+  int best_iteration = -1;
+  size_t num_voting_edges = 0;
+  size_t sample_size = 0;
+  size_t num_valid_hypotheses = 0;
+  std::vector<InterSubgraphEdgeDecision> edges;  // one per connecting edge, (i, j) order
+
+  std::vector<ViewPair> KeptEdges() const;     // oriented (i, j)
+  std::vector<ViewPair> RemovedEdges() const;  // oriented (i, j)
+};
+
+// The reason to record for a removed edge: kInterSubgraphInconsistent with E_r (deg, threshold
+// deg) or E_t / |t̄| (threshold max_translation_deviation_fraction); kOther with the number of
+// correspondences (cannot vote) or of voting edges (few edges). reason kNone for a kept edge.
+EdgeInvalidation InterSubgraphInvalidation(const InterSubgraphEdgeDecision& decision,
+                                           const SubgraphAlignmentOptions& options);
+
+// Decides the connecting edges of (k1, k2) in `graph`. `views_and_intrinsics` supplies the views
+// and intrinsics of the j images, `features` their keypoints.
+SubgraphAlignmentResult AlignSubgraphPair(const ViewGraph& graph, const SubgraphSolution& k1,
+                                          const SubgraphSolution& k2, const SfmData& views_and_intrinsics,
+                                          const FeaturesPerView& features,
+                                          const SubgraphAlignmentOptions& options = {});
+
+}  // namespace sfm_pruning

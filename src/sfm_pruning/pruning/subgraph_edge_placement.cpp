@@ -1,0 +1,81 @@
+#include "sfm_pruning/pruning/subgraph_edge_placement.hpp"
+
+#include <algorithm>
+
+namespace sfm_pruning {
+
+AbsolutePoseOptions DefaultSubgraphPnpOptions() {
+  AbsolutePoseOptions options;
+  options.solver = AbsolutePoseOptions::Solver::kEpnp;
+  options.max_reprojection_error_px = 4.0;
+  options.min_num_inliers = 12;
+  return options;
+}
+
+const char* EdgePlacementStatusName(EdgePlacementStatus status) {
+  switch (status) {
+    case EdgePlacementStatus::kPlaced: return "placed";
+    case EdgePlacementStatus::kMissingViewData: return "missing_view_data";
+    case EdgePlacementStatus::kTooFewCorrespondences: return "too_few_correspondences";
+    case EdgePlacementStatus::kPnpFailed: return "pnp_failed";
+  }
+  return "unknown";
+}
+
+std::vector<ViewPair> ConnectingEdges(const ViewGraph& graph, const std::set<IndexT>& views_k1,
+                                      const std::set<IndexT>& views_k2) {
+  std::vector<ViewPair> edges;
+  graph.ForEachValidEdge([&](const ViewPair& pair, const ViewGraphEdge&) {
+    if (views_k1.count(pair.first) && views_k2.count(pair.second)) {
+      edges.push_back(pair);
+    } else if (views_k1.count(pair.second) && views_k2.count(pair.first)) {
+      edges.push_back({pair.second, pair.first});
+    }
+  });
+  std::sort(edges.begin(), edges.end());
+  return edges;
+}
+
+EdgePlacement PlaceViewInSubgraph(const ViewGraph& graph, IndexT view_i, IndexT view_j,
+                                  const SubgraphSolution& k1,
+                                  const std::map<ObservationKey, IndexT>& landmarks_k1,
+                                  const SfmData& views_and_intrinsics, const FeaturesPerView& features,
+                                  const EdgePlacementOptions& options) {
+  EdgePlacement placement;
+  placement.view_i = view_i;
+  placement.view_j = view_j;
+  const auto view = views_and_intrinsics.views.find(view_j);
+  const auto features_j = features.find(view_j);
+  if (view == views_and_intrinsics.views.end() || features_j == features.end()) return placement;
+  const auto intrinsics = views_and_intrinsics.intrinsics.find(view->second.id_intrinsic);
+  if (intrinsics == views_and_intrinsics.intrinsics.end()) return placement;
+
+  std::vector<Eigen::Vector3d> bearings;
+  std::vector<Eigen::Vector3d> points;
+  for (const FeatureMatch& match : graph.OrientedMatches(view_i, view_j)) {
+    const auto landmark = landmarks_k1.find({view_i, match.i});
+    if (landmark == landmarks_k1.end() || match.j >= features_j->second.size()) continue;
+    bearings.push_back(intrinsics->second.Unproject(features_j->second.Position(match.j)));
+    points.push_back(k1.landmarks.at(landmark->second).X);
+  }
+  placement.num_correspondences = points.size();
+  if (points.size() < options.min_correspondences) {
+    placement.status = EdgePlacementStatus::kTooFewCorrespondences;
+    return placement;
+  }
+
+  AbsolutePoseOptions pnp = options.pnp;
+  if (pnp.max_reprojection_error_px > 0.0) pnp.focal_length_px = intrinsics->second.FocalLength();
+  pnp.ransac.seed = options.pnp.ransac.seed ^ ((static_cast<uint64_t>(view_i) << 32) | view_j);
+  const AbsolutePoseResult pose = EstimateAbsolutePose(bearings, points, pnp);
+  placement.num_pnp_inliers = pose.num_inliers;
+  if (!pose.success) {
+    placement.status = EdgePlacementStatus::kPnpFailed;
+    return placement;
+  }
+  placement.status = EdgePlacementStatus::kPlaced;
+  placement.pose_j_in_k1 = pose.pose;
+  return placement;
+}
+
+}  // namespace sfm_pruning

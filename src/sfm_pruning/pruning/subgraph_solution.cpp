@@ -1,0 +1,32 @@
+#include "sfm_pruning/pruning/subgraph_solution.hpp"
+
+#include <vector>
+
+#include "sfm_pruning/geometry/so3.hpp"
+
+namespace sfm_pruning {
+
+Pose SubgraphMeanPose(const SubgraphSolution& solution) {
+  if (solution.poses.empty()) return Pose();
+  std::vector<Eigen::Matrix3d> rotations;
+  rotations.reserve(solution.poses.size());
+  Eigen::Vector3d center_sum = Eigen::Vector3d::Zero();
+  for (const auto& [view_id, pose] : solution.poses) {
+    rotations.push_back(pose.rotation);
+    center_sum += pose.center;
+  }
+  return Pose(GeodesicMeanRotation(rotations).rotation,
+              center_sum / static_cast<double>(solution.poses.size()));
+}
+
+std::map<ObservationKey, IndexT> IndexLandmarksByObservation(const SubgraphSolution& solution) {
+  std::map<ObservationKey, IndexT> index;
+  for (const auto& [landmark_id, landmark] : solution.landmarks) {
+    for (const auto& [view_id, observation] : landmark.observations) {
+      index.emplace(ObservationKey{view_id, observation.id_feat}, landmark_id);  // first (smallest) wins
+    }
+  }
+  return index;
+}
+
+}  // namespace sfm_pruning

@@ -1,0 +1,181 @@
+#include <algorithm>
+#include <optional>
+
+#include <gtest/gtest.h>
+
+#include "pruning/pruning_test_scene.hpp"
+#include "sfm_pruning/geometry/so3.hpp"
+#include "sfm_pruning/pruning/chained_relative_pose.hpp"
+#include "sfm_pruning/pruning/subgraph_alignment.hpp"
+
+namespace sfm_pruning {
+namespace {
+
+using testing::MakePruningTestScene;
+using testing::PruningTestScene;
+using testing::RandomSimilarity;
+using testing::Similarity;
+
+const std::vector<IndexT> kViewsK1 = {0, 1, 2, 3, 4, 5, 6, 7};
+const std::vector<IndexT> kViewsK2 = {8, 9, 10, 11, 12, 13, 14, 15};
+constexpr double kScaleK1 = 2.5;
+constexpr double kScaleK2 = 0.4;
+constexpr double kTrueBeta = kScaleK1 / kScaleK2;  // k2 units -> k1 units
+
+// Two subgraphs of eight views, each in its own similarity frame, joined by 10 true edges and
+// 4 edges that matched a twin of the structure (rotated by 25° and shifted).
+struct TwoSubgraphs {
+  PruningTestScene scene = MakePruningTestScene(16, 50, 11);
+  Similarity frame_k1 = RandomSimilarity(1, kScaleK1);
+  Similarity frame_k2 = RandomSimilarity(2, kScaleK2);
+  SubgraphSolution k1;
+  SubgraphSolution k2;
+  std::vector<ViewPair> true_edges = {{0, 8}, {1, 9}, {2, 10}, {3, 11}, {4, 12},
+                                      {5, 13}, {6, 14}, {7, 15}, {0, 9}, {1, 10}};
+  std::vector<ViewPair> twin_edges = {{2, 8}, {3, 9}, {4, 14}, {5, 15}};
+
+  explicit TwoSubgraphs(bool with_twins = true) {
+    for (const ViewPair& edge : true_edges) scene.AddExactEdge(edge.first, edge.second);
+    if (with_twins) {
+      Similarity twin;
+      twin.rotation = ExpSO3(DegToRad(25.0) * Eigen::Vector3d::UnitZ());
+      twin.translation = Eigen::Vector3d(0.3, 0.2, 0.0);
+      for (const ViewPair& edge : twin_edges) scene.AddTwinEdge(edge.first, edge.second, twin);
+    }
+    k1 = scene.Solution(kViewsK1, frame_k1);
+    k2 = scene.Solution(kViewsK2, frame_k2);
+  }
+  SubgraphAlignmentResult Align(const SubgraphAlignmentOptions& options = {}) const {
+    return AlignSubgraphPair(scene.graph, k1, k2, scene.views_and_intrinsics, scene.features, options);
+  }
+};
+
+TEST(ChainedRelativePose, ClosedFormScaleRecoversTheTrueScale) {
+  TwoSubgraphs setup(false);
+  const Pose mean_k1 = SubgraphMeanPose(setup.k1);
+  const Pose mean_k2 = SubgraphMeanPose(setup.k2);
+  std::vector<ChainedRelativePose> chains;
+  for (const ViewPair& edge : setup.true_edges) {
+    const Pose j_in_k1 = setup.frame_k1.Apply(setup.scene.poses[edge.second]);  // exact placement
+    chains.push_back(ChainRelativePose(mean_k1, j_in_k1, setup.k2.poses.at(edge.second), mean_k2));
+  }
+  const std::optional<double> beta = SolveChainScale(chains);
+  ASSERT_TRUE(beta.has_value());
+  EXPECT_NEAR(*beta, kTrueBeta, 1e-9);
+  // With β* every edge gives the same c1 -> c2 pose: the true relative pose of the mean cameras.
+  for (const ChainedRelativePose& chain : chains) {
+    EXPECT_LT((chain.Translation(*beta) - chains[0].Translation(*beta)).norm(), 1e-9);
+    EXPECT_LT(RotationAngleBetween(chain.rotation, chains[0].rotation), 1e-9);
+  }
+  // One edge, or edges that all share j, carry no scale information.
+  EXPECT_FALSE(SolveChainScale({chains[0]}).has_value());
+  EXPECT_FALSE(SolveChainScale({chains[0], chains[0]}).has_value());
+}
+
+TEST(SubgraphAlignment, ExactEdgesAreAllKeptAndTheScaleIsRecovered) {
+  TwoSubgraphs setup(false);
+  const SubgraphAlignmentResult result = setup.Align();
+  ASSERT_EQ(result.status, SubgraphAlignmentStatus::kAligned);
+  EXPECT_EQ(result.num_voting_edges, 10u);
+  EXPECT_EQ(result.sample_size, 4u);
+  EXPECT_NEAR(result.beta, kTrueBeta, 1e-4);
+  EXPECT_TRUE(result.RemovedEdges().empty());
+  for (const auto& decision : result.edges) {
+    EXPECT_EQ(decision.placement.status, EdgePlacementStatus::kPlaced);
+    EXPECT_EQ(decision.placement.num_correspondences, 50u);
+    EXPECT_EQ(decision.verdict, InterSubgraphVerdict::kConsistent);
+    EXPECT_LT(decision.rotation_deviation_deg, 1e-3);
+  }
+}
+
+TEST(SubgraphAlignment, RansacRemovesEdgesToTheTwinStructure) {
+  TwoSubgraphs setup;
+  const SubgraphAlignmentResult result = setup.Align();
+  ASSERT_EQ(result.status, SubgraphAlignmentStatus::kAligned);
+  EXPECT_EQ(result.num_voting_edges, 14u);
+  EXPECT_EQ(result.sample_size, 5u);  // floor(0.4 · 14)
+  EXPECT_NEAR(result.beta, kTrueBeta, 1e-4);
+  std::vector<ViewPair> expected_kept = setup.true_edges;
+  std::sort(expected_kept.begin(), expected_kept.end());
+  std::vector<ViewPair> expected_removed = setup.twin_edges;
+  std::sort(expected_removed.begin(), expected_removed.end());
+  EXPECT_EQ(result.KeptEdges(), expected_kept);
+  EXPECT_EQ(result.RemovedEdges(), expected_removed);
+  SubgraphAlignmentOptions options;
+  for (const auto& decision : result.edges) {
+    if (decision.kept) continue;
+    EXPECT_EQ(decision.verdict, InterSubgraphVerdict::kRotationDeviation);
+    EXPECT_GT(decision.rotation_deviation_deg, 5.0);
+    const EdgeInvalidation why = InterSubgraphInvalidation(decision, options);
+    EXPECT_EQ(why.reason, EdgeInvalidReason::kInterSubgraphInconsistent);
+    EXPECT_DOUBLE_EQ(why.value, decision.rotation_deviation_deg);
+    EXPECT_DOUBLE_EQ(why.threshold, 5.0);
+  }
+}
+
+TEST(SubgraphAlignment, SameSeedSameDecisions) {
+  TwoSubgraphs setup;
+  SubgraphAlignmentOptions options;
+  options.seed = 1234;
+  const SubgraphAlignmentResult first = setup.Align(options);
+  const SubgraphAlignmentResult second = setup.Align(options);
+  EXPECT_EQ(first.best_iteration, second.best_iteration);
+  EXPECT_EQ(first.beta, second.beta);
+  EXPECT_EQ(first.KeptEdges(), second.KeptEdges());
+  ASSERT_EQ(first.edges.size(), second.edges.size());
+  for (size_t k = 0; k < first.edges.size(); ++k) {
+    EXPECT_EQ(first.edges[k].rotation_deviation_deg, second.edges[k].rotation_deviation_deg);
+    EXPECT_EQ(first.edges[k].translation_deviation, second.edges[k].translation_deviation);
+  }
+}
+
+TEST(SubgraphAlignment, EdgeWithTooFewCorrespondencesDoesNotVote) {
+  TwoSubgraphs setup(false);
+  setup.scene.AddExactEdge(6, 8, 5);  // 5 matches < 12
+  SubgraphAlignmentResult result = setup.Align();
+  ASSERT_EQ(result.status, SubgraphAlignmentStatus::kAligned);
+  EXPECT_EQ(result.num_voting_edges, 10u);
+  const auto weak = std::find_if(result.edges.begin(), result.edges.end(), [](const auto& d) {
+    return d.placement.view_i == 6 && d.placement.view_j == 8;
+  });
+  ASSERT_NE(weak, result.edges.end());
+  EXPECT_EQ(weak->placement.status, EdgePlacementStatus::kTooFewCorrespondences);
+  EXPECT_EQ(weak->placement.num_correspondences, 5u);
+  EXPECT_FALSE(weak->voted);
+  EXPECT_EQ(weak->verdict, InterSubgraphVerdict::kCannotVote);
+  EXPECT_TRUE(weak->kept);  // default policy
+
+  SubgraphAlignmentOptions remove;
+  remove.non_voting_edges = SubgraphAlignmentOptions::NonVotingPolicy::kRemove;
+  result = setup.Align(remove);
+  EXPECT_EQ(result.RemovedEdges(), std::vector<ViewPair>({{6, 8}}));
+  const EdgeInvalidation why = InterSubgraphInvalidation(result.edges[std::distance(
+      result.edges.begin(), std::find_if(result.edges.begin(), result.edges.end(),
+                                         [](const auto& d) { return !d.kept; }))], remove);
+  EXPECT_EQ(why.reason, EdgeInvalidReason::kOther);
+  EXPECT_DOUBLE_EQ(why.value, 5.0);
+  EXPECT_DOUBLE_EQ(why.threshold, 12.0);
+}
+
+TEST(SubgraphAlignment, PairsWithFewEdgesFollowTheirPolicy) {
+  PruningTestScene scene = MakePruningTestScene(16, 50, 11);
+  scene.AddExactEdge(0, 8);
+  scene.AddExactEdge(1, 9);
+  const SubgraphSolution k1 = scene.Solution(kViewsK1, RandomSimilarity(1, 1.0));
+  const SubgraphSolution k2 = scene.Solution(kViewsK2, RandomSimilarity(2, 3.0));
+  SubgraphAlignmentResult result = AlignSubgraphPair(scene.graph, k1, k2, scene.views_and_intrinsics, scene.features);
+  EXPECT_EQ(result.status, SubgraphAlignmentStatus::kTooFewVotingEdges);
+  EXPECT_EQ(result.KeptEdges().size(), 2u);
+  EXPECT_EQ(result.edges[0].verdict, InterSubgraphVerdict::kFewEdges);
+  SubgraphAlignmentOptions remove;
+  remove.few_edges = SubgraphAlignmentOptions::FewEdgesPolicy::kRemoveAll;
+  result = AlignSubgraphPair(scene.graph, k1, k2, scene.views_and_intrinsics, scene.features, remove);
+  EXPECT_EQ(result.RemovedEdges().size(), 2u);
+  // Unconnected subgraphs.
+  const SubgraphSolution lone = scene.Solution({12}, Similarity());
+  EXPECT_EQ(AlignSubgraphPair(scene.graph, k1, lone, scene.views_and_intrinsics, scene.features).status,
+            SubgraphAlignmentStatus::kNoEdges);
+}
+
+}  // namespace
+}  // namespace sfm_pruning
