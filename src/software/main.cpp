@@ -22,6 +22,8 @@ int main(int argc, char** argv) {
   app.require_subcommand(1);
   app.set_version_flag("--version", "prunesfm 0.1.0");
 
+  prunesfm::AddReconstructCommand(app);
+  prunesfm::AddRunCommand(app);
   prunesfm::AddConvertCommand(app);
   prunesfm::AddEvaluateCommand(app);
   prunesfm::AddSynthCommand(app);

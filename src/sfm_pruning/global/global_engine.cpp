@@ -1,0 +1,168 @@
+#include "sfm_pruning/global/global_engine.hpp"
+
+#include <algorithm>
+#include <chrono>
+#include <map>
+#include <set>
+#include <utility>
+
+#include "sfm_pruning/view_graph/components.hpp"
+
+namespace sfm_pruning {
+namespace {
+
+using Clock = std::chrono::steady_clock;
+
+double SecondsSince(Clock::time_point start) {
+  return std::chrono::duration<double>(Clock::now() - start).count();
+}
+
+// Runs `stage` and appends its wall time to the report.
+template <typename Stage>
+void Timed(const std::string& name, GlobalEngineReport* report, Stage&& stage) {
+  const Clock::time_point start = Clock::now();
+  stage();
+  report->timings.push_back({name, SecondsSince(start)});
+}
+
+// Unregisters the views that observe fewer than `min_observations` landmarks: their poses are
+// erased, their observations removed, and landmarks left with fewer than two observations go.
+// Returns the unregistered view ids.
+std::vector<IndexT> UnregisterWeakViews(size_t min_observations, SfmData* scene) {
+  std::map<IndexT, size_t> counts;
+  for (const auto& [landmark_id, landmark] : scene->structure) {
+    for (const auto& [view_id, observation] : landmark.observations) ++counts[view_id];
+  }
+  std::set<IndexT> weak;
+  for (const IndexT view_id : scene->PosedViewIds()) {
+    if (counts[view_id] < min_observations) weak.insert(view_id);
+  }
+  if (weak.empty()) return {};
+  for (const IndexT view_id : weak) scene->poses.erase(scene->views.at(view_id).id_pose);
+  for (auto it = scene->structure.begin(); it != scene->structure.end();) {
+    auto& observations = it->second.observations;
+    for (const IndexT view_id : weak) observations.erase(view_id);
+    it = observations.size() < 2 ? scene->structure.erase(it) : std::next(it);
+  }
+  return {weak.begin(), weak.end()};
+}
+
+bool Fail(const std::string& message, GlobalEngineReport* report) {
+  report->success = false;
+  report->message = message;
+  return false;
+}
+
+// The stages after the graph copy; false (with report->message) on failure.
+bool RunStages(const GlobalEngineOptions& options, const ViewGraph& graph, const FeaturesPerView& features,
+               SfmData* out, GlobalEngineReport* report, std::map<IndexT, std::string>* dropped,
+               const ProgressCallback& progress) {
+  // 1. Rotation averaging.
+  ViewGraph work = graph;
+  std::map<IndexT, Eigen::Matrix3d> rotations;
+  Timed("rotation averaging", report, [&]() {
+    report->rotation = EstimateGlobalRotations(&work, options.rotation, &rotations, progress);
+  });
+  if (!report->rotation.success) return Fail("rotation averaging: " + report->rotation.failure_reason, report);
+  const NodeGroup initial_component = LargestComponent(graph);
+  const std::set<IndexT> initial(initial_component.begin(), initial_component.end());
+  for (const IndexT view_id : report->rotation.dropped_views) {
+    dropped->emplace(view_id, initial.count(view_id) > 0 ? "cut off by the rotation filter"
+                                                         : "outside the largest component");
+  }
+  report->num_filtered_edges = report->rotation.filtered_edges.size();
+  const std::set<IndexT> estimated(report->rotation.estimated_views.begin(), report->rotation.estimated_views.end());
+  const ViewGraph kept = work.InducedSubgraph(estimated);
+  report->num_rotation_edges = kept.NumValidEdges();
+
+  // 2. Tracks.
+  TrackBuildingResult tracks;
+  Timed("tracks", report, [&]() {
+    TrackBuildingOptions track_options = options.tracks;
+    if (estimated.size() <= 3) track_options.min_track_length = std::min<size_t>(track_options.min_track_length, 2);
+    tracks = BuildTracks(kept, track_options);
+  });
+  report->num_tracks = tracks.tracks.size();
+  report->track_counts = tracks;
+  report->track_counts.tracks.clear();
+  if (tracks.tracks.empty()) return Fail("no track of the required length", report);
+
+  // 3. Positioning.
+  Timed("positioning", report, [&]() {
+    if (options.positioning == PositioningMethod::kGlobalPositioning) {
+      GlobalPositioningOptions positioning = options.global_positioning;
+      positioning.solver.seed = options.seed;
+      positioning.solver.num_threads = options.num_threads;
+      positioning.solver.progress = progress;
+      report->positioning = PositionCamerasAndPoints(positioning, rotations, tracks.tracks, features, out);
+    } else {
+      TranslationAveragingOptions averaging = options.translation_averaging;
+      averaging.solver.seed = options.seed;
+      averaging.solver.num_threads = options.num_threads;
+      averaging.solver.progress = progress;
+      report->positioning =
+          PositionCamerasByTranslationAveraging(averaging, kept, rotations, tracks.tracks, features, out).positioning;
+    }
+  });
+  if (!report->positioning.success) return Fail("positioning: " + report->positioning.message, report);
+  for (const IndexT view_id : estimated) {
+    if (!out->IsPosed(view_id)) dropped->emplace(view_id, "not positioned (no usable track)");
+  }
+
+  // 4. Bundle adjustment rounds, then the final adjustment and filter.
+  BundleAdjustmentOptions bundle = options.bundle;
+  bundle.num_threads = options.num_threads;
+  const size_t num_adjustments = static_cast<size_t>(std::max(options.num_bundle_rounds, 0)) + 1;
+  bool adjusted = true;
+  Timed("bundle adjustment", report, [&]() {
+    for (size_t round = 0; round < num_adjustments && adjusted; ++round) {
+      ReportProgress(progress, "bundle adjustment", round, num_adjustments);
+      report->bundle_adjustments.push_back(AdjustBundle(bundle, out));
+      adjusted = report->bundle_adjustments.back().success;
+      if (!adjusted) break;
+      const StructureFilteringResult filtered = FilterStructure(options.filtering, out);
+      if (round + 1 < num_adjustments) RetriangulateLandmarks(options.retriangulation, &filtered.removed, out);
+    }
+    ReportProgress(progress, "bundle adjustment", num_adjustments, num_adjustments);
+  });
+  if (!adjusted) return Fail("bundle adjustment: " + report->bundle_adjustments.back().message, report);
+  report->final_rms_px = report->bundle_adjustments.back().final_rms_px;
+
+  for (const IndexT view_id : UnregisterWeakViews(options.min_observations_per_view, out)) {
+    dropped->emplace(view_id, "too few observations after filtering");
+  }
+  return true;
+}
+
+}  // namespace
+
+void RunGlobalEngine(const GlobalEngineOptions& options, const ViewGraph& graph, const SfmData& views_and_intrinsics,
+                     const FeaturesPerView& features, SfmData* out, GlobalEngineReport* report,
+                     const ProgressCallback& progress) {
+  GlobalEngineReport local;
+  if (report == nullptr) report = &local;
+  *report = {};
+  const Clock::time_point start = Clock::now();
+  *out = views_and_intrinsics;
+  out->poses.clear();
+  out->structure.clear();
+  report->num_input_views = graph.NumNodes();
+  report->num_input_edges = graph.NumValidEdges();
+
+  std::map<IndexT, std::string> dropped;
+  if (report->num_input_edges == 0) {
+    Fail("the view graph has no edges", report);
+  } else if (RunStages(options, graph, features, out, report, &dropped, progress)) {
+    report->success = true;
+  } else {
+    out->poses.clear();
+    out->structure.clear();
+  }
+  for (const auto& [view_id, reason] : dropped) report->dropped_views.push_back({view_id, reason});
+  report->num_registered_views = out->PosedViewIds().size();
+  report->num_landmarks = out->structure.size();
+  for (const auto& [landmark_id, landmark] : out->structure) report->num_observations += landmark.observations.size();
+  report->total_seconds = SecondsSince(start);
+}
+
+}  // namespace sfm_pruning

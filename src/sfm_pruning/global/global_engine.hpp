@@ -1,0 +1,98 @@
+// The GLOBAL engine (METHOD.md §2): a verified view graph -> posed cameras and landmarks.
+//
+//   rotation averaging (filters edges > 10 deg, keeps the largest component)
+//   -> tracks (min length 3; 2 for graphs of at most 3 views)
+//   -> positioning: global positioning (GLOMAP, default) or translation averaging
+//   -> num_bundle_rounds x (bundle adjustment -> structure filtering -> retriangulation)
+//   -> final bundle adjustment and structure filtering
+//   -> views left with too few observations are unregistered.
+//
+// No I/O: the pruning engine calls it once per subgraph. Deterministic for a seed with
+// num_threads = 1 (bitwise); more threads only change Ceres' summation order.
+#pragma once
+
+#include <cstddef>
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include "sfm_pruning/global/bundle_adjustment.hpp"
+#include "sfm_pruning/global/global_positioning.hpp"
+#include "sfm_pruning/global/retriangulation.hpp"
+#include "sfm_pruning/global/rotation_averaging.hpp"
+#include "sfm_pruning/global/structure_filtering.hpp"
+#include "sfm_pruning/global/tracks.hpp"
+#include "sfm_pruning/global/translation_averaging.hpp"
+#include "sfm_pruning/global/view_graph_builder.hpp"
+#include "sfm_pruning/sfm/features.hpp"
+#include "sfm_pruning/sfm/sfm_data.hpp"
+#include "sfm_pruning/util/progress.hpp"
+#include "sfm_pruning/view_graph/view_graph.hpp"
+
+namespace sfm_pruning {
+
+enum class PositioningMethod {
+  kGlobalPositioning,     // GLOMAP: cameras and points jointly from the rays (default)
+  kTranslationAveraging,  // camera centres from the edge directions, then points
+};
+
+struct GlobalEngineOptions {
+  RotationAveragingOptions rotation;  // max_relative_rotation_error_deg = 10
+  // min_track_length = 3, lowered to 2 when the rotation averaging keeps at most 3 views.
+  TrackBuildingOptions tracks;
+  PositioningMethod positioning = PositioningMethod::kGlobalPositioning;
+  GlobalPositioningOptions global_positioning;
+  TranslationAveragingOptions translation_averaging;
+  // Intrinsics held constant by default (refine_focal / refine_principal_point available).
+  BundleAdjustmentOptions bundle;
+  StructureFilteringOptions filtering;  // 4 px, 1.5 deg
+  RetriangulationOptions retriangulation;
+  // Rounds of adjust -> filter -> retriangulate before the final adjust -> filter.
+  int num_bundle_rounds = 2;
+  // After the final filter, views observing fewer landmarks than this lose their pose.
+  size_t min_observations_per_view = 10;
+  // Overrides the positioning solvers' seeds (both methods).
+  uint64_t seed = 0;
+  // Ceres threads of positioning and bundle adjustment (1 = bitwise reproducible).
+  int num_threads = 1;
+};
+
+struct StageTiming {
+  std::string stage;  // "rotation averaging", "tracks", "positioning", "bundle adjustment", ...
+  double seconds = 0.0;  // wall time
+};
+
+struct GlobalEngineReport {
+  bool success = false;
+  std::string message;  // why it failed (empty on success)
+
+  std::vector<StageTiming> timings;  // in execution order
+  double total_seconds = 0.0;
+
+  size_t num_input_views = 0;       // nodes of the input graph
+  size_t num_input_edges = 0;       // valid edges of the input graph
+  size_t num_rotation_edges = 0;    // valid edges between the views kept by rotation averaging
+  size_t num_filtered_edges = 0;    // invalidated by the rotation filter
+  size_t num_tracks = 0;
+  size_t num_registered_views = 0;  // posed views of the output
+  size_t num_landmarks = 0;
+  size_t num_observations = 0;
+  double final_rms_px = 0.0;        // of the last bundle adjustment
+  std::vector<DroppedView> dropped_views;  // view id order
+
+  RotationAveragingResult rotation;
+  TrackBuildingResult track_counts;  // tracks themselves cleared
+  PositioningResult positioning;
+  std::vector<BundleAdjustmentResult> bundle_adjustments;
+};
+
+// Reconstructs the views of `graph` (valid edges only; the graph is copied, not modified).
+// `views_and_intrinsics` supplies views + intrinsics (poses and structure are ignored); `out`
+// receives them with the estimated poses and landmarks (landmark observations name feature ids).
+// On failure out holds the views and intrinsics without poses and report->success is false.
+// Progress: the stage names of the estimators plus "bundle adjustment".
+void RunGlobalEngine(const GlobalEngineOptions& options, const ViewGraph& graph,
+                     const SfmData& views_and_intrinsics, const FeaturesPerView& features, SfmData* out,
+                     GlobalEngineReport* report, const ProgressCallback& progress = {});
+
+}  // namespace sfm_pruning

@@ -1,0 +1,44 @@
+// Kept apart from the verification code: io/colmap_database.hpp and geometry/two_view_geometry.hpp
+// both define a TwoViewGeometry, so no file may include the two.
+#include "software/commands/reconstruction_input.hpp"
+
+#include "sfm_pruning/io/colmap_database.hpp"
+#include "sfm_pruning/io/openmvg_features.hpp"
+#include "sfm_pruning/io/openmvg_matches.hpp"
+#include "sfm_pruning/io/openmvg_sfm_data.hpp"
+
+namespace prunesfm {
+
+ReconstructionInput ReadOpenMvgInput(const std::filesystem::path& sfm_data, const std::filesystem::path& matches_dir,
+                                     const std::filesystem::path& match_file,
+                                     const sfm_pruning::ProgressCallback& progress) {
+  using sfm_pruning::SfmDataParts;
+  ReconstructionInput input;
+  input.source = sfm_data.string();
+  input.scene = sfm_pruning::ReadSfmData(sfm_data, SfmDataParts::kViews | SfmDataParts::kIntrinsics);
+  input.features = sfm_pruning::ReadOpenMvgFeatures(input.scene, matches_dir, false, progress);
+  const std::filesystem::path matches_file = sfm_pruning::FindOpenMvgMatchesFile(matches_dir, match_file);
+  sfm_pruning::MatchReadOptions options;
+  options.sfm_data = &input.scene;
+  options.features = &input.features;
+  input.putative = sfm_pruning::ReadOpenMvgMatches(matches_file, options);
+  input.source = matches_file.string();
+  return input;
+}
+
+ReconstructionInput ReadColmapInput(const std::filesystem::path& database) {
+  sfm_pruning::ColmapDatabase colmap = sfm_pruning::ReadColmapDatabase(database);
+  ReconstructionInput input;
+  input.source = database.string();
+  input.scene = std::move(colmap.sfm_data);
+  input.features = std::move(colmap.features);
+  input.putative = std::move(colmap.putative);
+  for (auto& [pair, geometry] : colmap.verified) {
+    sfm_pruning::VerifiedPair& verified = input.verified[pair];
+    verified.inliers = std::move(geometry.inliers);
+    verified.relative_pose = geometry.relative_pose;
+  }
+  return input;
+}
+
+}  // namespace prunesfm

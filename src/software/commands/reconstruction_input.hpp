@@ -1,0 +1,35 @@
+// What `prunesfm reconstruct` and `prunesfm run` read before verification: views + intrinsics,
+// features, and either putative matches or already verified pairs, from an OpenMVG project or a
+// COLMAP database.
+#pragma once
+
+#include <filesystem>
+#include <string>
+
+#include "sfm_pruning/global/verified_pairs.hpp"
+#include "sfm_pruning/sfm/features.hpp"
+#include "sfm_pruning/sfm/matches.hpp"
+#include "sfm_pruning/sfm/sfm_data.hpp"
+#include "sfm_pruning/util/progress.hpp"
+
+namespace prunesfm {
+
+struct ReconstructionInput {
+  std::string source;  // the file named in error messages
+  sfm_pruning::SfmData scene;  // views and intrinsics, no poses or structure
+  sfm_pruning::FeaturesPerView features;
+  sfm_pruning::PairwiseMatches putative;  // to verify (used when `verified` is empty)
+  sfm_pruning::VerifiedPairs verified;    // COLMAP two_view_geometries
+};
+
+// sfm_data.json (views + intrinsics), the .feat files of `matches_dir` and the match file chosen
+// by FindOpenMvgMatchesFile (`match_file` when given). Matches are verified again whatever
+// OpenMVG did with them (its files carry no relative pose).
+ReconstructionInput ReadOpenMvgInput(const std::filesystem::path& sfm_data, const std::filesystem::path& matches_dir,
+                                     const std::filesystem::path& match_file,
+                                     const sfm_pruning::ProgressCallback& progress);
+
+// A COLMAP database: its two_view_geometries when it has any, its matches otherwise.
+ReconstructionInput ReadColmapInput(const std::filesystem::path& database);
+
+}  // namespace prunesfm

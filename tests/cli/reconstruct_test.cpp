@@ -1,0 +1,123 @@
+// prunesfm reconstruct / run end to end on a small synthetic project: outputs, accuracy through
+// prunesfm evaluate, and the one-line errors.
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <fstream>
+
+#include <nlohmann/json.hpp>
+
+#include "run_prunesfm.hpp"
+#include "sfm_pruning/io/colmap_database.hpp"
+#include "sfm_pruning/io/openmvg_matches.hpp"
+#include "support/test_data.hpp"
+
+namespace sfm_pruning::testing {
+namespace {
+namespace fs = std::filesystem;
+
+// A 12-view clean scene written once per test binary.
+const fs::path& CleanProject() {
+  static const fs::path dir = []() {
+    const fs::path out = ScratchDir("cli_reconstruct_scene") / "clean";
+    const CommandResult result =
+        RunPrunesfm({"synth", "--scene", "clean", "--seed", "4", "--num_views", "12", "--output", out.string()});
+    EXPECT_EQ(result.exit_code, 0) << result.err;
+    return out;
+  }();
+  return dir;
+}
+
+double Auc3(const fs::path& estimate, const fs::path& scratch) {
+  const fs::path json_path = scratch / "evaluation.json";
+  const CommandResult result = RunPrunesfm({"evaluate", "--estimate", estimate.string(), "--ground_truth",
+                                            (CleanProject() / "ground_truth" / "gt_cameras.txt").string(), "--json",
+                                            json_path.string()});
+  EXPECT_EQ(result.exit_code, 0) << result.err;
+  const nlohmann::json json = nlohmann::json::parse(std::ifstream(json_path));
+  EXPECT_EQ(json.at("num_registered_images"), 12);
+  return json.at("auc")[0].at("auc_percent").get<double>();
+}
+
+TEST(CliReconstruct, OpenMvgProjectIsReconstructedAccurately) {
+  const fs::path scratch = ScratchDir("cli_reconstruct_openmvg");
+  const fs::path out = scratch / "out";
+  const CommandResult result =
+      RunPrunesfm({"reconstruct", "--engine", "GLOBAL", "--sfm_data", (CleanProject() / "sfm_data.json").string(),
+                   "--matches_dir", (CleanProject() / "matches").string(), "--output", out.string()});
+  ASSERT_EQ(result.exit_code, 0) << result.err;
+  for (const char* file : {"sfm_data.json", "sparse/0/cameras.bin", "sparse/0/images.bin", "sparse/0/points3D.bin",
+                           "cloud_and_poses.ply", "timings.json"}) {
+    EXPECT_TRUE(fs::exists(out / file)) << file;
+  }
+  const nlohmann::json timings = nlohmann::json::parse(std::ifstream(out / "timings.json"));
+  EXPECT_EQ(timings.at("counts").at("registered_views"), 12);
+  EXPECT_GE(timings.at("stages").size(), 6u);
+  EXPECT_GE(Auc3(out / "sparse" / "0", scratch), 97.0);
+  EXPECT_GE(Auc3(out / "sfm_data.json", scratch), 97.0);
+}
+
+TEST(CliReconstruct, RunFromColmapDatabase) {
+  const fs::path scratch = ScratchDir("cli_reconstruct_run");
+  const fs::path out = scratch / "out";
+  const CommandResult result =
+      RunPrunesfm({"run", "--database", (CleanProject() / "database.db").string(), "--image_path",
+                   (scratch / "images").string(), "--output_path", out.string(), "--engine", "GLOBAL"});
+  ASSERT_EQ(result.exit_code, 0) << result.err;
+  EXPECT_GE(Auc3(out / "sparse" / "0", scratch), 97.0);
+}
+
+TEST(CliReconstruct, MissingDatabaseIsOneLine) {
+  const CommandResult result = RunPrunesfm(
+      {"reconstruct", "--database", "/nonexistent/database.db", "--output", ScratchDir("cli_rec_missing").string()});
+  EXPECT_EQ(result.exit_code, 1);
+  EXPECT_EQ(CountLines(result.err), 1) << result.err;
+  EXPECT_NE(result.err.find("/nonexistent/database.db"), std::string::npos) << result.err;
+}
+
+TEST(CliReconstruct, DatabaseWithoutGeometriesOrMatchesHasNoEdges) {
+  const fs::path scratch = ScratchDir("cli_reconstruct_empty");
+  ColmapDatabase database = ReadColmapDatabase(CleanProject() / "database.db");
+  database.putative.clear();
+  database.verified.clear();
+  WriteColmapDatabase(database, scratch / "empty.db");
+  const CommandResult result = RunPrunesfm(
+      {"reconstruct", "--database", (scratch / "empty.db").string(), "--output", (scratch / "out").string()});
+  EXPECT_EQ(result.exit_code, 1);
+  EXPECT_EQ(CountLines(result.err), 1) << result.err;
+  EXPECT_NE(result.err.find("no edges"), std::string::npos) << result.err;
+  EXPECT_FALSE(fs::exists(scratch / "out" / "sfm_data.json"));
+}
+
+TEST(CliReconstruct, DisconnectedGraphUsesTheLargestComponentAndReportsDroppedViews) {
+  const fs::path scratch = ScratchDir("cli_reconstruct_cut");
+  const PairwiseMatches all = ReadOpenMvgMatches(CleanProject() / "matches" / "matches.putative.bin");
+  PairwiseMatches cut;  // views 0 and 1 only match each other
+  for (const auto& [pair, matches] : all) {
+    if ((pair.first < 2) == (pair.second < 2)) cut.emplace(pair, matches);
+  }
+  WriteOpenMvgMatches(scratch / "matches.cut.bin", cut);
+  const fs::path out = scratch / "out";
+  const CommandResult result = RunPrunesfm(
+      {"reconstruct", "--sfm_data", (CleanProject() / "sfm_data.json").string(), "--matches_dir",
+       (CleanProject() / "matches").string(), "--match_file", (scratch / "matches.cut.bin").string(), "--output",
+       out.string()});
+  ASSERT_EQ(result.exit_code, 0) << result.err;
+  EXPECT_NE(result.err.find("dropped view 0"), std::string::npos) << result.err;
+  EXPECT_NE(result.err.find("outside the largest component"), std::string::npos) << result.err;
+  const nlohmann::json timings = nlohmann::json::parse(std::ifstream(out / "timings.json"));
+  EXPECT_EQ(timings.at("counts").at("registered_views"), 10);
+  EXPECT_EQ(timings.at("dropped_views").size(), 2u);
+}
+
+TEST(CliReconstruct, PrunedEngineIsNotImplementedYet) {
+  const CommandResult result =
+      RunPrunesfm({"run", "--database", (CleanProject() / "database.db").string(), "--image_path", "images",
+                   "--output_path", ScratchDir("cli_rec_pruned").string(), "--engine", "GLOBAL_PRUNED"});
+  EXPECT_EQ(result.exit_code, 1);
+  EXPECT_EQ(CountLines(result.err), 1) << result.err;
+  EXPECT_NE(result.err.find("not implemented yet"), std::string::npos) << result.err;
+}
+
+}  // namespace
+}  // namespace sfm_pruning::testing

@@ -1,0 +1,98 @@
+// The GLOBAL engine end to end on a clean synthetic scene: verification, view graph, rotation
+// averaging, tracks, positioning, bundle adjustment; scored with the evaluation module.
+#include <gtest/gtest.h>
+
+#include "engine_test_scene.hpp"
+
+namespace sfm_pruning::testing {
+namespace {
+
+TEST(EngineCleanScene, RegistersEveryViewAccurately) {
+  const SyntheticScene& scene = CleanScene();
+  const EngineRun run = RunEngineOn(scene, scene.putative_matches);
+  ASSERT_TRUE(run.engine.success) << run.engine.message;
+  EXPECT_TRUE(run.build.dropped_views.empty());
+  EXPECT_EQ(run.engine.num_registered_views, scene.ground_truth.views.size());
+  EXPECT_TRUE(run.engine.dropped_views.empty());
+  EXPECT_GT(run.engine.num_landmarks, 500u);
+  EXPECT_LT(run.engine.final_rms_px, 1.5);
+  const EvaluationReport report = EvaluateModel(run.model, scene.ground_truth);
+  EXPECT_EQ(report.num_registered_images, scene.ground_truth.views.size());
+  EXPECT_GE(AucAt(report, 3.0), 97.0);
+  EXPECT_GE(AucAt(report, 10.0), 99.0);
+  // Every stage was timed, in order.
+  ASSERT_EQ(run.engine.timings.size(), 4u);
+  EXPECT_EQ(run.engine.timings.front().stage, "rotation averaging");
+  EXPECT_EQ(run.engine.timings.back().stage, "bundle adjustment");
+}
+
+TEST(EngineCleanScene, TranslationAveragingAlsoRegistersEveryView) {
+  const SyntheticScene& scene = CleanScene();
+  GlobalEngineOptions options;
+  options.positioning = PositioningMethod::kTranslationAveraging;
+  const EngineRun run = RunEngineOn(scene, scene.putative_matches, {}, options);
+  ASSERT_TRUE(run.engine.success) << run.engine.message;
+  EXPECT_EQ(run.engine.num_registered_views, scene.ground_truth.views.size());
+  EXPECT_GE(AucAt(EvaluateModel(run.model, scene.ground_truth), 3.0), 97.0);
+}
+
+TEST(EngineCleanScene, SameSeedGivesBitwiseIdenticalPoses) {
+  const SyntheticScene& scene = CleanScene();
+  ViewGraphBuildOptions build;
+  build.num_threads = 2;  // verification results do not depend on the thread count
+  const EngineRun first = RunEngineOn(scene, scene.putative_matches, build);
+  const EngineRun second = RunEngineOn(scene, scene.putative_matches);
+  ASSERT_TRUE(first.engine.success) << first.engine.message;
+  ASSERT_EQ(first.model.poses.size(), second.model.poses.size());
+  for (const auto& [pose_id, pose] : first.model.poses) {
+    const Pose& other = second.model.poses.at(pose_id);
+    EXPECT_TRUE(pose.rotation == other.rotation && pose.center == other.center) << "pose " << pose_id;
+  }
+  EXPECT_EQ(first.model.structure, second.model.structure);
+}
+
+TEST(EngineCleanScene, DisconnectedGraphKeepsTheLargestComponentAndReportsTheRest) {
+  const SyntheticScene& scene = CleanScene();
+  // Cut views 0 and 1 off from everything but each other.
+  PairwiseMatches matches;
+  for (const auto& [pair, pair_matches] : scene.putative_matches) {
+    if ((pair.first < 2) == (pair.second < 2)) matches.emplace(pair, pair_matches);
+  }
+  const EngineRun run = RunEngineOn(scene, matches);
+  ASSERT_TRUE(run.engine.success) << run.engine.message;
+  ASSERT_EQ(run.build.dropped_views.size(), 2u);
+  EXPECT_EQ(run.build.dropped_views[0].view_id, 0u);
+  EXPECT_EQ(run.build.dropped_views[1].reason, "outside the largest component");
+  EXPECT_EQ(run.engine.num_registered_views, scene.ground_truth.views.size() - 2);
+}
+
+TEST(EngineCleanScene, VerifiedPairsWithoutPosesAreReestimated) {
+  const SyntheticScene& scene = CleanScene();
+  const SfmData listing = Listing(scene);
+  const ViewGraph reference = BuildViewGraphFromMatches({}, listing, scene.features, scene.putative_matches);
+  VerifiedPairs verified;
+  for (const auto& [pair, edge] : reference.Edges()) verified[pair].inliers = edge.matches;
+  ViewGraphBuildReport build;
+  const ViewGraph graph = BuildViewGraphFromVerifiedPairs({}, listing, scene.features, verified, &build);
+  EXPECT_EQ(graph.NumValidEdges(), reference.NumValidEdges());
+  for (const auto& [pair, edge] : graph.Edges()) {
+    const RelativePose& expected = reference.Edges().at(pair).relative_pose;
+    EXPECT_LT(RadToDeg(RotationAngleBetween(edge.relative_pose.rotation, expected.rotation)), 0.5);
+  }
+}
+
+TEST(EngineCleanScene, EmptyGraphFailsWithNoEdges) {
+  const SyntheticScene& scene = CleanScene();
+  const SfmData listing = Listing(scene);
+  ViewGraphBuildReport build;
+  const ViewGraph graph = BuildViewGraphFromMatches({}, listing, scene.features, {}, &build);
+  SfmData model;
+  GlobalEngineReport report;
+  RunGlobalEngine({}, graph, listing, scene.features, &model, &report);
+  EXPECT_FALSE(report.success);
+  EXPECT_EQ(report.message, "the view graph has no edges");
+  EXPECT_TRUE(model.poses.empty());
+}
+
+}  // namespace
+}  // namespace sfm_pruning::testing
