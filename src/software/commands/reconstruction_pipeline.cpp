@@ -5,6 +5,7 @@
 #include <chrono>
 #include <filesystem>
 
+#include <glog/logging.h>
 #include <nlohmann/json.hpp>
 
 #include "sfm_pruning/global/global_engine.hpp"
@@ -97,6 +98,18 @@ nlohmann::json TimingsJson(const EngineSettings& settings, const sfm_pruning::Vi
   return json;
 }
 
+// Ceres logs solver warnings (e.g. a rejected Levenberg-Marquardt step) through glog on stderr;
+// the engine reports through its results instead, so the command keeps stderr to its own lines.
+void SilenceSolverLogging() {
+  static const bool initialized = []() {
+    google::InitGoogleLogging("prunesfm");
+    FLAGS_logtostderr = true;
+    FLAGS_minloglevel = google::GLOG_FATAL;
+    return true;
+  }();
+  (void)initialized;
+}
+
 void WriteOutputs(const sfm_pruning::SfmData& model, const sfm_pruning::FeaturesPerView& features,
                   const nlohmann::json& timings, const fs::path& output) {
   fs::create_directories(output / "sparse");
@@ -130,6 +143,7 @@ void RunReconstruction(const EngineSettings& settings, const ReconstructionInput
   if (settings.engine == "GLOBAL_PRUNED") {
     throw Error("--engine GLOBAL_PRUNED: not implemented yet (view-graph pruning has not landed); use --engine GLOBAL");
   }
+  SilenceSolverLogging();
   const auto verify_start = std::chrono::steady_clock::now();
   sfm_pruning::ViewGraphBuildReport build;
   const sfm_pruning::ViewGraph graph = BuildGraph(settings, input, &build);
