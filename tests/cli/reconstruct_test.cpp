@@ -67,6 +67,21 @@ TEST(CliReconstruct, RunFromColmapDatabase) {
   EXPECT_GE(Auc3(out / "sparse" / "0", scratch), 97.0);
 }
 
+TEST(CliReconstruct, DatabaseGeometriesWithoutPosesAreReestimated) {
+  const fs::path scratch = ScratchDir("cli_reconstruct_verified");
+  ColmapDatabase database = ReadColmapDatabase(CleanProject() / "database.db");
+  for (const auto& [pair, matches] : database.putative) {  // as COLMAP 3.8 stores them: no pose
+    database.verified[pair].inliers = matches;
+    database.verified[pair].config = static_cast<int>(ColmapTwoViewConfig::kCalibrated);
+  }
+  WriteColmapDatabase(database, scratch / "verified.db");
+  const fs::path out = scratch / "out";
+  const CommandResult result = RunPrunesfm(
+      {"reconstruct", "--database", (scratch / "verified.db").string(), "--output", out.string()});
+  ASSERT_EQ(result.exit_code, 0) << result.err;
+  EXPECT_GE(Auc3(out / "sparse" / "0", scratch), 97.0);
+}
+
 TEST(CliReconstruct, MissingDatabaseIsOneLine) {
   const CommandResult result = RunPrunesfm(
       {"reconstruct", "--database", "/nonexistent/database.db", "--output", ScratchDir("cli_rec_missing").string()});
