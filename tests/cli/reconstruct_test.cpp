@@ -16,10 +16,13 @@ namespace sfm_pruning::testing {
 namespace {
 namespace fs = std::filesystem;
 
-// A 12-view clean scene written once per test binary.
+// A 12-view clean scene written once per process. ctest runs every test in its own process, in
+// parallel, so the folder is named after the first test that asks for it: two processes never
+// write the same folder.
 const fs::path& CleanProject() {
   static const fs::path dir = []() {
-    const fs::path out = ScratchDir("cli_reconstruct_scene") / "clean";
+    const std::string test_name = ::testing::UnitTest::GetInstance()->current_test_info()->name();
+    const fs::path out = ScratchDir("cli_reconstruct_scene_" + test_name) / "clean";
     const CommandResult result =
         RunPrunesfm({"synth", "--scene", "clean", "--seed", "4", "--num_views", "12", "--output", out.string()});
     EXPECT_EQ(result.exit_code, 0) << result.err;

@@ -28,13 +28,23 @@ TEST(ModelIo, DetectsFormatFromPath) {
   EXPECT_EQ(DetectModelFormat(dir / "sfm_data.json"), ModelFormat::kSfmData);
   EXPECT_EQ(DetectModelFormat(dir / "sfm_data.bin"), ModelFormat::kSfmData);
   EXPECT_EQ(DetectModelFormat(dir / "gt_cameras.txt"), ModelFormat::kGroundTruthCameras);
+  Touch(dir / "cloud.ply");
+  EXPECT_EQ(DetectModelFormat(dir / "cloud.ply"), ModelFormat::kPly);
+}
+
+TEST(ModelIo, OutputFormatFollowsThePath) {
+  EXPECT_EQ(OutputModelFormat("out/sfm_data.json"), ModelFormat::kSfmData);
+  EXPECT_EQ(OutputModelFormat("out/sfm_data.bin"), ModelFormat::kSfmData);
+  EXPECT_EQ(OutputModelFormat("out/points.ply"), ModelFormat::kPly);
+  EXPECT_EQ(OutputModelFormat("out/gt_cameras.txt"), ModelFormat::kGroundTruthCameras);
+  EXPECT_EQ(OutputModelFormat("out/sparse/0"), ModelFormat::kColmapModel);
 }
 
 TEST(ModelIo, RejectsMissingAndUnknownPaths) {
   const fs::path dir = testing::ScratchDir("model_io_reject");
-  Touch(dir / "cloud.ply");
+  Touch(dir / "cloud.xyz");
   EXPECT_THROW(DetectModelFormat(dir / "missing.json"), Error);
-  EXPECT_THROW(DetectModelFormat(dir / "cloud.ply"), Error);
+  EXPECT_THROW(DetectModelFormat(dir / "cloud.xyz"), Error);
   EXPECT_THROW(DetectModelFormat(dir), Error);  // a folder without cameras.*
   try {
     ReadModel(dir / "missing.json");

@@ -4,7 +4,7 @@
 
 #include "sfm_pruning/eval/pose_auc.hpp"
 #include "sfm_pruning/eval/relative_pose_error.hpp"
-#include "sfm_pruning/eval/summary_statistics.hpp"
+#include "sfm_pruning/util/statistics.hpp"
 #include "sfm_pruning/util/error.hpp"
 
 namespace sfm_pruning {

@@ -8,7 +8,7 @@
 #include <Eigen/Eigenvalues>
 #include <Eigen/Geometry>
 
-#include "sfm_pruning/eval/summary_statistics.hpp"
+#include "sfm_pruning/util/statistics.hpp"
 
 namespace sfm_pruning {
 namespace {

@@ -10,6 +10,7 @@
 #include "sfm_pruning/global/rotation_irls.hpp"
 #include "sfm_pruning/global/rotation_problem.hpp"
 #include "sfm_pruning/sfm/pose.hpp"
+#include "sfm_pruning/util/statistics.hpp"
 #include "sfm_pruning/view_graph/components.hpp"
 #include "sfm_pruning/view_graph/spanning_tree.hpp"
 
@@ -39,16 +40,12 @@ size_t DenseIndexOf(const std::vector<IndexT>& sorted_ids, IndexT id) {
   return static_cast<size_t>(std::lower_bound(sorted_ids.begin(), sorted_ids.end(), id) - sorted_ids.begin());
 }
 
-RotationResidualStats SummarizeResiduals(std::vector<double> residuals_deg) {
+RotationResidualStats SummarizeResiduals(const std::vector<double>& residuals_deg) {
   RotationResidualStats stats;
   stats.num_edges = residuals_deg.size();
-  if (residuals_deg.empty()) return stats;
-  std::sort(residuals_deg.begin(), residuals_deg.end());
-  const size_t n = residuals_deg.size();
-  stats.mean_deg = std::accumulate(residuals_deg.begin(), residuals_deg.end(), 0.0) / n;
-  stats.median_deg =
-      n % 2 == 1 ? residuals_deg[n / 2] : 0.5 * (residuals_deg[n / 2 - 1] + residuals_deg[n / 2]);
-  stats.max_deg = residuals_deg.back();
+  stats.mean_deg = Mean(residuals_deg);
+  stats.median_deg = Median(residuals_deg);
+  stats.max_deg = Max(residuals_deg);
   return stats;
 }
 
@@ -59,7 +56,7 @@ RotationResidualStats ResidualStats(const RotationProblem& problem,
   std::vector<double> angles_deg(residuals.size());
   for (size_t k = 0; k < residuals.size(); ++k) angles_deg[k] = RadToDeg(residuals[k].norm());
   if (residuals_deg != nullptr) *residuals_deg = angles_deg;
-  return SummarizeResiduals(std::move(angles_deg));
+  return SummarizeResiduals(angles_deg);
 }
 
 RotationIrlsOptions L1StageOptions(const RotationAveragingOptions& options, bool from_tree) {

@@ -2,17 +2,16 @@
 
 #include <algorithm>
 
+#include "sfm_pruning/util/statistics.hpp"
+
 namespace sfm_pruning {
 namespace {
 
-ErrorSummary Summarize(std::vector<double> values) {
+ErrorSummary Summarize(const std::vector<double>& values) {
   ErrorSummary summary;
   summary.count = values.size();
-  if (values.empty()) return summary;
-  std::sort(values.begin(), values.end());
-  const size_t n = values.size();
-  summary.max_deg = values.back();
-  summary.median_deg = n % 2 == 1 ? values[n / 2] : 0.5 * (values[n / 2 - 1] + values[n / 2]);
+  summary.max_deg = Max(values);
+  summary.median_deg = Median(values);
   return summary;
 }
 
@@ -34,7 +33,7 @@ void TestLoops(const ViewGraph& graph, const ConsistencyTestOptions& options, Co
       report->violations.push_back(std::move(violation));
     }
   }
-  report->loop_error = Summarize(std::move(errors));
+  report->loop_error = Summarize(errors);
 }
 
 void TestRelativeToAbsolute(const ViewGraph& graph, const SubgraphSolution& solution,
@@ -68,8 +67,8 @@ void TestRelativeToAbsolute(const ViewGraph& graph, const SubgraphSolution& solu
       }
     }
   });
-  report->relative_rotation_error = Summarize(std::move(rotation_errors));
-  report->relative_translation_error = Summarize(std::move(translation_errors));
+  report->relative_rotation_error = Summarize(rotation_errors);
+  report->relative_translation_error = Summarize(translation_errors);
 }
 
 }  // namespace

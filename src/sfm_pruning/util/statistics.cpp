@@ -1,4 +1,4 @@
-#include "sfm_pruning/eval/summary_statistics.hpp"
+#include "sfm_pruning/util/statistics.hpp"
 
 #include <algorithm>
 #include <numeric>
@@ -15,6 +15,11 @@ double Median(std::vector<double> values) {
 double Mean(const std::vector<double>& values) {
   if (values.empty()) return 0.0;
   return std::accumulate(values.begin(), values.end(), 0.0) / static_cast<double>(values.size());
+}
+
+double Max(const std::vector<double>& values) {
+  if (values.empty()) return 0.0;
+  return *std::max_element(values.begin(), values.end());
 }
 
 }  // namespace sfm_pruning

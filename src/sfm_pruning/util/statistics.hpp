@@ -1,4 +1,5 @@
-// Median and mean of error lists, shared by the evaluation code.
+// Median, mean and maximum of error lists: one implementation for every report in the library
+// (evaluation, rotation averaging residuals, pruning consistency tests).
 #pragma once
 
 #include <vector>
@@ -9,5 +10,7 @@ namespace sfm_pruning {
 double Median(std::vector<double> values);
 // Arithmetic mean; 0 for an empty list.
 double Mean(const std::vector<double>& values);
+// Largest value; 0 for an empty list.
+double Max(const std::vector<double>& values);
 
 }  // namespace sfm_pruning
