@@ -252,7 +252,7 @@ TEST(ColmapInterop, ColmapMapsADatabaseWeWrote) {
     std::vector<FeatureMatch> matches;
     for (IndexT k = 0; k < scene.structure.size(); ++k) matches.push_back({k, k});
     database.putative[{a, b}] = matches;
-    TwoViewGeometry geometry;
+    ColmapTwoViewGeometry geometry;
     geometry.inliers = matches;
     geometry.config = static_cast<int>(ColmapTwoViewConfig::kCalibrated);
     geometry.relative_pose = RelativePoseBetween(scene.poses.at(a), scene.poses.at(b));

@@ -73,7 +73,7 @@ TEST(ColmapDatabase, ReadsRealDatabasesOfBothSchemas) {
     EXPECT_EQ(db.putative.size(), real.putative_pairs);
     EXPECT_EQ(Sum(db.putative, [](const auto& m) { return m.size(); }), real.putative_matches);
     EXPECT_EQ(db.verified.size(), real.verified_pairs);
-    EXPECT_EQ(Sum(db.verified, [](const TwoViewGeometry& g) { return g.inliers.size(); }), real.inliers);
+    EXPECT_EQ(Sum(db.verified, [](const ColmapTwoViewGeometry& g) { return g.inliers.size(); }), real.inliers);
 
     ASSERT_EQ(db.sfm_data.intrinsics.size(), 1u);
     const CameraIntrinsics& camera = db.sfm_data.intrinsics.at(1);
@@ -135,7 +135,7 @@ TEST(ColmapDatabase, WriteReadRoundTripIsExact) {
   EXPECT_EQ(back.putative, original.putative);
   ASSERT_EQ(back.verified.size(), original.verified.size());
   for (const auto& [pair, geometry] : original.verified) {
-    const TwoViewGeometry& other = back.verified.at(pair);
+    const ColmapTwoViewGeometry& other = back.verified.at(pair);
     EXPECT_EQ(other.inliers, geometry.inliers);
     EXPECT_EQ(other.config, geometry.config);
     EXPECT_EQ(other.F, geometry.F);

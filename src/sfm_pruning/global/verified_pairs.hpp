@@ -1,7 +1,6 @@
 // Pairs whose inlier matches were verified elsewhere (e.g. COLMAP's two_view_geometries), the
-// input of BuildViewGraphFromVerifiedPairs. Kept apart from geometry/two_view_geometry.hpp so
-// that code reading a COLMAP database (io/colmap_database.hpp, which has its own TwoViewGeometry)
-// can fill it without including both.
+// input of BuildViewGraphFromVerifiedPairs. Independent of any file format: the CLI fills it from
+// io/colmap_database.hpp.
 #pragma once
 
 #include <map>

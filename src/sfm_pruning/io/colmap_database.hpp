@@ -35,7 +35,7 @@ enum class ColmapTwoViewConfig : int {
 };
 
 // One row of two_view_geometries, for the pair (first, second) with first < second.
-struct TwoViewGeometry {
+struct ColmapTwoViewGeometry {
   std::vector<FeatureMatch> inliers;
   int config = 0;  // a ColmapTwoViewConfig value
   // For pixel coordinates in COLMAP's convention: x_second^T F x_first = 0; E relates the
@@ -54,7 +54,7 @@ struct ColmapDatabase {
   PairwiseMatches putative;  // pairs of the matches table with at least one match
   // Pairs of two_view_geometries with at least one inlier; COLMAP's empty rows (pairs whose
   // verification failed) are skipped.
-  std::map<ViewPair, TwoViewGeometry> verified;
+  std::map<ViewPair, ColmapTwoViewGeometry> verified;
 };
 
 // COLMAP's pair id of two image ids (smaller id first) and back.

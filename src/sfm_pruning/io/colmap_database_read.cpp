@@ -195,7 +195,7 @@ void ReadTwoViewGeometries(Connection& db, ColmapDatabase* out) {
   while (rows.Step()) {
     const ViewPair pair = RequirePair(db, *out, rows.ColumnInt64(0), "two_view_geometries");
     const std::string what = PairName("two-view geometry", pair);
-    TwoViewGeometry geometry;
+    ColmapTwoViewGeometry geometry;
     geometry.inliers = DecodeMatches(db, *out, rows, pair, what + " inliers");
     geometry.config = static_cast<int>(rows.ColumnInt64(4));
     geometry.F = colmap_blobs::DecodeMatrix3(rows.ColumnBlob(5), db.source(), what + " F");

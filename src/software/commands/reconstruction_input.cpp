@@ -1,5 +1,3 @@
-// Kept apart from the verification code: io/colmap_database.hpp and geometry/two_view_geometry.hpp
-// both define a TwoViewGeometry, so no file may include the two.
 #include "software/commands/reconstruction_input.hpp"
 
 #include "sfm_pruning/io/colmap_database.hpp"
