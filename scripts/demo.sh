@@ -2,9 +2,9 @@
 # The README's first command: installs the dependencies, builds PruneSfM (Release) and runs the
 # main job end to end on a small default input. Output goes to out/demo/.
 #
-# Until the reconstruction engines land (issues 4 and 5), the main job is the part of the
-# pipeline that exists: generate the synthetic courtyard scene (four alike walls), convert its
-# ground truth to a COLMAP model and a PLY, and evaluate the COLMAP model against the truth.
+# Until the image front end lands (issue 6), the default input is a generated scene: the
+# synthetic `clean` scene (features + putative matches + ground truth) is reconstructed with the
+# GLOBAL engine and the result is evaluated against the truth and exported.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 out=${1:-out/demo}
@@ -17,9 +17,10 @@ cmake --build build/release -j "$(nproc)" --target prunesfm
 prunesfm=build/release/src/software/prunesfm
 
 rm -rf "$out"
-"$prunesfm" synth --scene courtyard --output "$out/scene" --seed 1
-"$prunesfm" convert --input "$out/scene/ground_truth/sfm_data.json" --output "$out/ground_truth_colmap"
-"$prunesfm" convert --input "$out/scene/ground_truth/sfm_data.json" --output "$out/ground_truth.ply"
-"$prunesfm" evaluate --estimate "$out/ground_truth_colmap" \
+"$prunesfm" synth --scene clean --output "$out/scene" --seed 1
+"$prunesfm" reconstruct --engine GLOBAL --sfm_data "$out/scene/sfm_data.json" \
+  --matches_dir "$out/scene/matches" --output "$out/reconstruction"
+"$prunesfm" evaluate --estimate "$out/reconstruction/sparse/0" \
   --ground_truth "$out/scene/ground_truth/gt_cameras.txt" --json "$out/evaluation.json"
+"$prunesfm" convert --input "$out/reconstruction/sfm_data.json" --output "$out/model.ply"
 echo "demo: outputs in $out"
