@@ -128,13 +128,21 @@ TEST(CliReconstruct, DisconnectedGraphUsesTheLargestComponentAndReportsDroppedVi
   EXPECT_EQ(timings.at("dropped_views").size(), 2u);
 }
 
-TEST(CliReconstruct, PrunedEngineIsNotImplementedYet) {
+TEST(CliReconstruct, PrunedEngineReconstructsAndWritesThePruningReport) {
+  const fs::path scratch = ScratchDir("cli_rec_pruned");
+  const fs::path out = scratch / "out";
   const CommandResult result =
-      RunPrunesfm({"run", "--database", (CleanProject() / "database.db").string(), "--image_path", "images",
-                   "--output_path", ScratchDir("cli_rec_pruned").string(), "--engine", "GLOBAL_PRUNED"});
-  EXPECT_EQ(result.exit_code, 1);
-  EXPECT_EQ(CountLines(result.err), 1) << result.err;
-  EXPECT_NE(result.err.find("not implemented yet"), std::string::npos) << result.err;
+      RunPrunesfm({"run", "--database", (CleanProject() / "database.db").string(), "--image_path",
+                   (scratch / "images").string(), "--output_path", out.string(), "--engine", "GLOBAL_PRUNED"});
+  ASSERT_EQ(result.exit_code, 0) << result.err;
+  EXPECT_NE(result.err.find("pruning: "), std::string::npos) << result.err;
+  const nlohmann::json report = nlohmann::json::parse(std::ifstream(out / "pruning_report.json"));
+  EXPECT_GE(report.at("tree").size(), 1u);
+  EXPECT_EQ(report.at("phases").size(), 2u);
+  EXPECT_TRUE(report.at("removed_edges").is_array());
+  const nlohmann::json timings = nlohmann::json::parse(std::ifstream(out / "timings.json"));
+  EXPECT_EQ(timings.at("engine"), "GLOBAL_PRUNED");
+  EXPECT_GE(Auc3(out / "sparse" / "0", scratch), 97.0);
 }
 
 }  // namespace

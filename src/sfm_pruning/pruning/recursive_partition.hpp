@@ -1,0 +1,95 @@
+// Recursive subgraph partition (paper, "Subgraph Partition"; METHOD.md §3): the view graph is
+// split by Louvain into communities; each community is reconstructed on its own by the GLOBAL
+// engine (RunGlobalEngine on the induced subgraph) and its solution is tested for consistency
+// (consistency_tests.hpp). A community that fails is partitioned again.
+//
+// Termination (the paper does not spell it out). A community is accepted as is when
+//   - it passes the consistency tests (kConsistent);
+//   - it has at most tiny_subgraph_size views (kTiny): 1 view gets the identity pose and no
+//     points; 2 views are reconstructed by the engine (min track length 2), and when the engine
+//     fails they get the edge's relative pose (first view at the identity) and no points;
+//   - Louvain returns it as a single community (kUnsplittable);
+//   - it sits at max_depth (kMaxDepth) or recursion is off (kSinglePass).
+// The root (depth 0) is the whole input graph; it is always split first, never solved unless
+// Louvain cannot split it. Every node of the tree is kept for the report.
+//
+// Deterministic: communities are processed in Louvain's canonical order (largest first), depth
+// first; Louvain and the engine are seeded from the options.
+#pragma once
+
+#include <cstddef>
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include "sfm_pruning/global/global_engine.hpp"
+#include "sfm_pruning/pruning/consistency_tests.hpp"
+#include "sfm_pruning/pruning/subgraph_solution.hpp"
+#include "sfm_pruning/sfm/features.hpp"
+#include "sfm_pruning/sfm/sfm_data.hpp"
+#include "sfm_pruning/util/progress.hpp"
+#include "sfm_pruning/view_graph/louvain.hpp"
+#include "sfm_pruning/view_graph/view_graph.hpp"
+
+namespace sfm_pruning {
+
+struct RecursivePartitionOptions {
+  bool recursive = true;  // false: a single Louvain pass, every community accepted (ablation)
+  LouvainOptions louvain;
+  ConsistencyTestOptions consistency;  // each test can be switched off there
+  GlobalEngineOptions engine;          // per-community reconstruction
+  size_t tiny_subgraph_size = 2;       // communities of at most this many views are accepted
+  int max_depth = 8;                   // nodes at this depth are not split again
+};
+
+enum class SubgraphStatus {
+  kSplit,         // inner node: partitioned into its children
+  kConsistent,    // accepted: passed the consistency tests
+  kTiny,          // accepted: at most tiny_subgraph_size views
+  kUnsplittable,  // accepted: Louvain returned a single community
+  kMaxDepth,      // accepted: inconsistent, but at max_depth
+  kSinglePass,    // accepted: recursion off
+};
+
+// "split", "consistent", "tiny", "unsplittable", "max_depth", "single_pass".
+const char* SubgraphStatusName(SubgraphStatus status);
+
+struct SubgraphNode {
+  int parent = -1;  // index in RecursivePartitionResult::nodes; -1 for the root
+  int depth = 0;
+  std::vector<IndexT> view_ids;  // sorted
+  std::vector<int> children;
+  SubgraphStatus status = SubgraphStatus::kSplit;
+  bool solved = false;          // the engine ran on it (or it got the tiny fallback)
+  bool engine_success = false;  // RunGlobalEngine succeeded
+  std::string engine_message;
+  size_t num_edges = 0;         // valid edges of the induced subgraph
+  size_t num_registered = 0;
+  size_t num_landmarks = 0;
+  bool consistency_tested = false;
+  ConsistencyReport consistency;  // violations + error summaries (empty when not tested)
+  double seconds = 0.0;           // engine + tests of this node
+  int accepted_index = -1;        // index in `accepted` when accepted
+};
+
+struct AcceptedSubgraph {
+  int node = -1;  // index in RecursivePartitionResult::nodes
+  SubgraphSolution solution;
+};
+
+struct RecursivePartitionResult {
+  std::vector<SubgraphNode> nodes;  // nodes[0] = root; preorder
+  std::vector<AcceptedSubgraph> accepted;  // in acceptance order (depth first, largest first)
+  size_t num_engine_runs = 0;
+};
+
+// The solution of a RunGlobalEngine output: poses re-keyed by view id, every landmark.
+SubgraphSolution SolutionFromModel(const std::vector<IndexT>& view_ids, const SfmData& model);
+
+// Partitions the valid part of `graph` (every node of it; the caller restricts it to one
+// component). Progress: "subgraph partition" (nodes processed, nodes known so far).
+RecursivePartitionResult PartitionViewGraph(const RecursivePartitionOptions& options, const ViewGraph& graph,
+                                            const SfmData& views_and_intrinsics, const FeaturesPerView& features,
+                                            const ProgressCallback& progress = {});
+
+}  // namespace sfm_pruning

@@ -1,0 +1,84 @@
+// Subgraph-guided view-graph pruning (paper, "Overview"; METHOD.md §3–4) and the GLOBAL_PRUNED
+// engine built on it.
+//
+// PruneViewGraph:
+//   1. the largest connected component of the valid graph is partitioned recursively
+//      (recursive_partition.hpp: Louvain + RunGlobalEngine per community + consistency tests);
+//      views outside it are left alone (the final solve drops them anyway);
+//   2. for every pair of accepted subgraphs (k1 < k2 in acceptance order, so k1 is the earlier,
+//      usually larger one whose points place k2's views) joined by valid edges,
+//      AlignSubgraphPair decides the connecting edges and each removed edge is invalidated in
+//      the graph with InterSubgraphInvalidation (kInterSubgraphInconsistent + measured error).
+// Edges inside an accepted subgraph are never touched.
+//
+// RunPrunedGlobalEngine (GLOBAL_PRUNED) = PruneViewGraph on a copy of the graph, then
+// RunGlobalEngine on the pruned graph (which keeps its largest component).
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "sfm_pruning/global/global_engine.hpp"
+#include "sfm_pruning/pruning/recursive_partition.hpp"
+#include "sfm_pruning/pruning/subgraph_alignment.hpp"
+
+namespace sfm_pruning {
+
+struct ViewGraphPruningOptions {
+  RecursivePartitionOptions partition;
+  SubgraphAlignmentOptions alignment;
+};
+
+struct SubgraphPairReport {
+  int k1 = -1;  // indices into RecursivePartitionResult::accepted
+  int k2 = -1;
+  SubgraphAlignmentStatus status = SubgraphAlignmentStatus::kNoEdges;
+  size_t num_edges = 0;
+  size_t num_voting_edges = 0;
+  size_t num_removed_edges = 0;
+  double beta = 1.0;
+};
+
+struct RemovedEdge {
+  ViewPair pair{kUndefinedIndex, kUndefinedIndex};  // first < second
+  int k1 = -1;
+  int k2 = -1;
+  InterSubgraphVerdict verdict = InterSubgraphVerdict::kConsistent;
+  EdgeInvalidation invalidation;
+};
+
+struct ViewGraphPruningReport {
+  RecursivePartitionResult partition;
+  std::vector<SubgraphPairReport> pairs;  // connected pairs only, (k1, k2) order
+  std::vector<RemovedEdge> removed_edges;  // pair order, then (i, j) order
+  size_t num_input_edges = 0;   // valid edges before pruning
+  size_t num_output_edges = 0;  // valid edges after pruning
+  std::vector<StageTiming> timings;  // "subgraph partition", "inter-subgraph pruning"
+  double total_seconds = 0.0;
+};
+
+// Invalidates the inconsistent inter-subgraph edges of `graph`. Progress: "subgraph partition",
+// then "inter-subgraph pruning" (pairs done / pairs).
+void PruneViewGraph(const ViewGraphPruningOptions& options, ViewGraph* graph, const SfmData& views_and_intrinsics,
+                    const FeaturesPerView& features, ViewGraphPruningReport* report,
+                    const ProgressCallback& progress = {});
+
+struct PrunedGlobalEngineOptions {
+  ViewGraphPruningOptions pruning;
+  GlobalEngineOptions engine;  // final solve
+  // Copies engine.seed / num_threads into the partition's per-community engine and the Louvain
+  // and RANSAC seeds (so one --seed drives everything).
+  void SetSeedAndThreads(uint64_t seed, int num_threads);
+};
+
+struct PrunedGlobalEngineReport {
+  ViewGraphPruningReport pruning;
+  GlobalEngineReport engine;
+};
+
+// GLOBAL_PRUNED. `graph` is copied, not modified. Same output contract as RunGlobalEngine.
+void RunPrunedGlobalEngine(const PrunedGlobalEngineOptions& options, const ViewGraph& graph,
+                           const SfmData& views_and_intrinsics, const FeaturesPerView& features, SfmData* out,
+                           PrunedGlobalEngineReport* report, const ProgressCallback& progress = {});
+
+}  // namespace sfm_pruning
