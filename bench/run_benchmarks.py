@@ -130,7 +130,8 @@ def prunesfm_capabilities(prunesfm):
     run_help = ""
     if has_run:
         run_help = subprocess.run([str(prunesfm), "run", "--help"], capture_output=True, text=True).stdout
-    return {"run": has_run, "num_threads": "--num_threads" in run_help}
+    refine = sorted(set(re.findall(r"--[a-z_]*(?:refine|focal|principal)[a-z_]*", run_help)))
+    return {"run": has_run, "num_threads": "--num_threads" in run_help, "intrinsics_options": refine}
 
 
 def colmap_version(colmap):
@@ -244,6 +245,25 @@ def colmap_database_pairs(db_path):
     return names, pairs
 
 
+def num_verified_pairs(db_path):
+    """Pairs with inliers in two_view_geometries, 0 unless every matched pair has been verified (an
+    interrupted COLMAP run is not reused) or if the database is missing."""
+    if not Path(db_path).is_file():
+        return 0
+    try:
+        # A read-write connection: closing it folds a pending write-ahead log into the file.
+        db = sqlite3.connect(str(db_path))
+        try:
+            verified, inliers = db.execute(
+                "SELECT COUNT(*), COALESCE(SUM(rows > 0), 0) FROM two_view_geometries").fetchone()
+            matched = db.execute("SELECT COUNT(*) FROM matches").fetchone()[0]
+        finally:
+            db.close()
+    except sqlite3.Error:
+        return 0
+    return inliers if verified >= matched else 0
+
+
 def colmap_camera_summary(db_path):
     with sqlite3.connect(str(db_path)) as db:
         rows = list(db.execute("SELECT model, width, height, prior_focal_length FROM cameras"))
@@ -257,6 +277,18 @@ def prepare_synthetic(args, prunesfm, scene, num_views, work):
     extra = SMOKE_SYNTH_ARGS if args.smoke else []
     if num_views is not None:
         extra = ["--num_views", num_views]
+    synth_args = ["--scene", scene, "--seed", str(args.seed), *map(str, extra)]
+    previous = args.previous_meta.get("scenes", {}).get(key) if args.reuse else None
+    gt = out / "ground_truth" / "gt_cameras.txt"
+    if (previous and previous.get("synth_args", synth_args) == synth_args and (out / "database.db").is_file()
+            and gt.is_file()):
+        # --reuse: the database `synth` wrote in the earlier run (same arguments) is still in --work.
+        (out / "images").mkdir(exist_ok=True)
+        prep = [dict(s, carried=s.get("carried") or args.previous_date) for s in previous.get("prep", [])]
+        print(f"  [synth] reused {out / 'database.db'} (from the run of {args.previous_date})", flush=True)
+        return {"key": key, "kind": "synthetic", "database": out / "database.db", "images": out / "images",
+                "gt": gt, "prep": prep, "shared_stages": [], "ok": True, "error": None,
+                "synth_args": synth_args, "reused": True}
     stage = run_stage("synth", [prunesfm, "synth", "--scene", scene, "--output", out, "--seed", args.seed,
                                 "--num_threads", args.threads, *extra], work / f"{key}.synth.log", args.timeout)
     images = out / "images"  # synth writes no images; COLMAP's mapper only needs the folder to exist
@@ -264,8 +296,7 @@ def prepare_synthetic(args, prunesfm, scene, num_views, work):
         images.mkdir(exist_ok=True)
     return {"key": key, "kind": "synthetic", "database": out / "database.db", "images": images,
             "gt": out / "ground_truth" / "gt_cameras.txt", "prep": [stage], "shared_stages": [],
-            "ok": stage["rc"] == 0, "error": stage.get("error"),
-            "synth_args": ["--scene", scene, "--seed", str(args.seed), *map(str, extra)]}
+            "ok": stage["rc"] == 0, "error": stage.get("error"), "synth_args": synth_args, "reused": False}
 
 
 def prepare_dataset(args, scene, colmap, work):
@@ -282,10 +313,21 @@ def prepare_dataset(args, scene, colmap, work):
         info["error"] = "needs colmap for feature extraction and matching (not installed)"
         return info
     out = work / scene / "shared"
+    db = out / "database.db"
+    previous = args.previous_meta.get("scenes", {}).get(scene) if args.reuse else None
+    if previous and previous.get("shared_stages") and num_verified_pairs(db) > 0:
+        # --reuse: COLMAP's features and verified matches of the earlier run are still in --work; their
+        # stage times are those measured then (marked as carried in the report).
+        info["shared_stages"] = [dict(s, carried=s.get("carried") or args.previous_date) for s in previous["shared_stages"]]
+        info["camera"] = colmap_camera_summary(db)
+        info["database"] = db
+        info["ok"] = True
+        info["reused"] = True
+        print(f"  [features, match] reused {db} (from the run of {args.previous_date})", flush=True)
+        return info
     if out.exists():
         shutil.rmtree(out)
     out.mkdir(parents=True)
-    db = out / "database.db"
     t = str(args.threads)
     extract = run_stage("features", [colmap, "feature_extractor", "--database_path", db, "--image_path", images,
                                      "--ImageReader.single_camera", "1",
@@ -316,14 +358,30 @@ def prepare_dataset(args, scene, colmap, work):
 
 def run_colmap(args, prunesfm, colmap, scene, work):
     out = work / scene["key"] / "colmap"
+    verified = work / scene["key"] / "colmap_verified.db"  # COLMAP's verified synthetic database, kept for --reuse
+    previous_match = None
+    if args.reuse and scene["kind"] == "synthetic" and scene.get("reused"):
+        previous_row = next((r for r in args.previous_rows if r["scene"] == scene["key"] and r["engine"] == "colmap"
+                             and r.get("status") == "ok" and not r.get("carried_from")), None)
+        previous_match = next((s for s in (previous_row or {}).get("stages", []) if s["name"] == "match"), None)
+        if previous_match and num_verified_pairs(verified) == 0 and num_verified_pairs(out / "database.db") > 0:
+            copy_database(out / "database.db", verified)  # the earlier run's copy, verified by its `match`
+        if num_verified_pairs(verified) == 0:
+            previous_match = None
     if out.exists():
         shutil.rmtree(out)
     out.mkdir(parents=True)
     db = out / "database.db"
-    copy_database(scene["database"], db)
     stages = []
     t = str(args.threads)
-    if scene["kind"] == "synthetic":
+    if previous_match is not None:
+        # --reuse: only the mapper is timed again, on the database COLMAP verified in the earlier run.
+        copy_database(verified, db)
+        stages.append(dict(previous_match, carried=previous_match.get("carried") or args.previous_date))
+        print(f"  [match] reused {verified} (from the run of {args.previous_date})", flush=True)
+    else:
+        copy_database(scene["database"], db)
+    if scene["kind"] == "synthetic" and previous_match is None:
         # The database holds putative matches but no two-view geometries. COLMAP 3.8's matchers keep
         # the matches of a pair that already has them and only verify them geometrically.
         names, pairs = colmap_database_pairs(db)
@@ -339,6 +397,7 @@ def run_colmap(args, prunesfm, colmap, scene, work):
                                 out / "match.log", args.timeout, colmap_env()))
         if stages[-1]["rc"] != 0:
             return stages, None, stages[-1]["error"]
+        copy_database(db, verified)
     sparse = out / "sparse"
     sparse.mkdir()
     mapper = [colmap, "mapper", "--database_path", db, "--image_path", scene["images"], "--output_path", sparse,
@@ -353,25 +412,46 @@ def run_colmap(args, prunesfm, colmap, scene, work):
     return stages, model, note
 
 
+def set_known_intrinsics(db_path, gt_path):
+    """--known_k: every camera of the database copy becomes PINHOLE with the ground truth's K (fx fy cx
+    cy of gt_cameras.txt's first camera: Strecha's K.txt, Middlebury's *_par.txt; one K per dataset),
+    no distortion, i.e. "start from K.txt" (../shared/datasets/README.md)."""
+    first = next(l.split() for l in Path(gt_path).read_text().splitlines() if l.strip() and not l.startswith("#"))
+    fx, fy, cx, cy = map(float, first[3:7])
+    with sqlite3.connect(str(db_path)) as db:
+        db.execute("UPDATE cameras SET model = 1, params = ?, prior_focal_length = 1",
+                   (struct.pack("<4d", fx, fy, cx, cy),))
+    db.close()
+    return fx, fy, cx, cy
+
+
 def run_ours(args, prunesfm, caps, engine, scene, work):
-    out = work / scene["key"] / engine
+    label, engine, extra = engine, *args.variants.get(engine, (engine, []))
+    out = work / scene["key"] / label
     if out.exists():
         shutil.rmtree(out)
     out.mkdir(parents=True)
     db = out / "database.db"
     copy_database(scene["database"], db)
+    if label in args.known_k:
+        set_known_intrinsics(db, scene["gt"])
     result_dir = out / "result"
     argv = [prunesfm, "run", "--database", db, "--image_path", scene["images"], "--output_path", result_dir,
             "--engine", engine]
     if caps["num_threads"]:
         argv += ["--num_threads", args.threads]
+    argv += extra
     stage = run_stage("run", argv, out / "run.log", args.timeout)
-    # Optional: the engine's own breakdown, {"stages": {"name": seconds, ...}} in result/timings.json.
+    # Optional: the engine's own breakdown in result/timings.json, "stages" either {"name": seconds, ...}
+    # or [{"stage": name, "seconds": s}, ...] (what `prunesfm run` writes).
     timings = result_dir / "timings.json"
     if timings.is_file():
         try:
-            stage["breakdown"] = {k: round(float(v), 2) for k, v in json.loads(timings.read_text())["stages"].items()}
-        except (ValueError, KeyError, TypeError):
+            listed = json.loads(timings.read_text())["stages"]
+            if isinstance(listed, list):
+                listed = {e["stage"]: e["seconds"] for e in listed}
+            stage["breakdown"] = {k: round(float(v), 2) for k, v in listed.items()}
+        except (ValueError, KeyError, TypeError, AttributeError):
             pass
     model, num_models = largest_model(result_dir / "sparse")
     note = stage.get("error") or (None if num_models <= 1 else f"{num_models} models, the largest evaluated")
@@ -386,18 +466,42 @@ def fmt(value, digits=1):
     return "–" if value is None else f"{value:.{digits}f}"
 
 
+def peak_cell(row):
+    """The row's peak; when shared stages dominate it, also the engine's own stages' peak."""
+    own = [s["peak_mb"] for s in row.get("stages", []) if not s.get("shared")]
+    if own and any(s.get("shared") for s in row.get("stages", [])):
+        return f"{row['peak_mb']:.0f} (own {max(own):.0f})"
+    return f"{row['peak_mb']:.0f}"
+
+
+def engine_order(rows):
+    """Our engines, then their variants (`--variant`), then COLMAP."""
+    names = []
+    for e in OUR_ENGINES + [r["engine"] for r in rows] + ["colmap"]:
+        if e not in names and e != "colmap":
+            names.append(e)
+    return [e for e in names + ["colmap"] if any(r["engine"] == e for r in rows)]
+
+
 def stage_cell(row):
     parts = []
     for s in row["stages"]:
-        text = f"{s['name']}{'*' if s.get('shared') else ''} {s['seconds']:.1f}"
+        text = f"{s['name']}{'*' if s.get('shared') else ''}{'†' if s.get('carried') else ''} {s['seconds']:.1f}"
         if s.get("breakdown"):
             text += " (" + ", ".join(f"{k} {v:.1f}" for k, v in s["breakdown"].items()) + ")"
         parts.append(text)
     return " · ".join(parts) if parts else "–"
 
 
+NOT_IMPLEMENTED = "not implemented yet"
+
+
 def row_status(row):
-    return row.get("status", "ok")
+    """A failed run whose error says the engine is not implemented is reported as such."""
+    status = row.get("status", "ok")
+    if status == "failed" and NOT_IMPLEMENTED in (row.get("note") or ""):
+        return NOT_IMPLEMENTED
+    return status
 
 
 def fold_verdict(auc10):
@@ -414,12 +518,14 @@ def write_markdown(path, meta, rows, scenes):
     by_scene = {}
     for row in rows:
         by_scene.setdefault(row["scene"], []).append(row)
-    engines = [e for e in ALL_ENGINES if any(r["engine"] == e for r in rows)]
+    engines = engine_order(rows)
     L = []
     L.append("# Benchmarks")
     L.append("")
     L.append("Generated by `bench/run_benchmarks.py` (do not edit by hand; how to rerun and what every stage "
-             "contains: `bench/README.md`). Every number below comes from the run described here.")
+             "contains: `bench/README.md`). Every number below comes from the run described here"
+             + (", or, where marked †, from the earlier run(s) it merged (`--merge`, `--reuse`; dates below)."
+                if meta.get("merged_from") or any(r.get("carried_from") for r in rows) else "."))
     L.append("")
     m = meta["machine"]
     L.append(f"- Command: `{meta['command']}`")
@@ -440,9 +546,40 @@ def write_markdown(path, meta, rows, scenes):
              "images count as failed pairs (`prunesfm evaluate`, docs/evaluation.md); **rot err** = median "
              "rotation error in degrees after similarity alignment; **stages** = wall seconds per stage (`*` = "
              "stage shared by all engines of the scene and counted in each total); **total** = sum of the "
-             "stages; **peak MB** = largest peak RSS of any stage; **× colmap** = total / COLMAP's total on the "
-             "same scene in this run. Synthetic-scene generation (`synth`) is input preparation, not counted.")
+             "stages; **peak MB** = largest peak RSS of any stage (own = of the engine's own stages, without the shared ones); **× colmap** = total / COLMAP's total on the "
+             "same scene (the COLMAP row of the table); **rec × map** = our reconstruction time / COLMAP's "
+             "`map` stage on the same scene, the issue's speed target (≤ 0.5) — our reconstruction time is the "
+             "`run` stage, minus its `verification` breakdown on synthetic scenes, where `run` verifies the "
+             "putative matches itself while COLMAP does that in its `match` stage. Synthetic-scene generation "
+             "(`synth`) is input preparation, not counted.")
     L.append("")
+    L.append("Real images: every engine reads COLMAP's database of the shared `features*` + `match*` stages "
+             "(PruneSfM has no feature extraction yet; their time is counted in every total). Our engines "
+             "use its verified two-view geometries (`two_view_geometries`; COLMAP 3.8 stores no relative "
+             "pose, so the engine re-estimates each pair's pose from the stored inliers: `verification` in "
+             "the breakdown) and COLMAP's `SIMPLE_RADIAL` camera as the initial intrinsics.")
+    if meta.get("prunesfm_run") and "prunesfm_run_intrinsics_options" in meta:
+        options = meta["prunesfm_run_intrinsics_options"]
+        if options:
+            L.append(f"`prunesfm run` intrinsics options in this build: {', '.join(f'`{o}`' for o in options)}.")
+        else:
+            L.append("`prunesfm run --help` offers no option to refine the focal length or the principal point in "
+                     "this build: our engines hold COLMAP's prior camera as given (focal 1.2·max(w, h) when no EXIF, "
+                     "principal point at the image centre, ~16 px from the truth on the Strecha sets). A `+K` row, "
+                     "where present, is the same engine started from the dataset's known K instead "
+                     "(`--known_k`: \"start from K.txt\", `../shared/datasets/README.md`); COLMAP never gets K.")
+    L.append("")
+    merged = meta.get("merged_from")
+    carried_dates = sorted({r["carried_from"] for r in rows if r.get("carried_from")} |
+                           {s["carried"] for r in rows for s in r.get("stages", []) if s.get("carried")})
+    if carried_dates:
+        L.append("**†** = carried over from an earlier run (" + ", ".join(carried_dates) + "), not measured in this "
+                 "one: a row marked † in the engine column was not run this time (`--merge`); a stage marked † "
+                 "is input preparation whose result this run reused from the work folder (`--reuse`)"
+                 + (f"; earlier run: `{merged['command']}`, commit `{merged['git_commit']}`" if merged else "")
+                 + ". A ratio comes from one run when both rows carry the same date (both unmarked, or both † "
+                 "with the same date); the totals of rows with † stages add the earlier run's seconds.")
+        L.append("")
     # Summary
     L.append("## Summary: AUC@10 (registered / total)")
     L.append("")
@@ -455,11 +592,36 @@ def write_markdown(path, meta, rows, scenes):
             if r is None:
                 cells.append("–")
             elif row_status(r) != "ok":
-                cells.append(r["status"])
+                cells.append(row_status(r) + (" †" if r.get("carried_from") else ""))
             else:
-                cells.append(f"{r['auc']['10']:.1f} ({r['registered']}/{r['num_gt']})")
+                cells.append(f"{r['auc']['10']:.1f} ({r['registered']}/{r['num_gt']})"
+                             + (" †" if r.get("carried_from") else ""))
         L.append(f"| {key} | " + " | ".join(cells) + " |")
     L.append("")
+    # Speed target: our reconstruction time against COLMAP's mapper on the same scene.
+    ours = [e for e in engines if e != "colmap"]
+    speed = []
+    for key in scenes:
+        srows = by_scene.get(key, [])
+        base = next((r for r in srows if r["engine"] == "colmap" and row_status(r) == "ok"), None)
+        base_map = next((s for s in (base or {}).get("stages", []) if s["name"] == "map"), None)
+        cells = []
+        for e in ours:
+            r = next((r for r in srows if r["engine"] == e), None)
+            if r is None or row_status(r) != "ok" or r.get("reconstruction_s") is None or not base_map:
+                cells.append("–" if r is None or row_status(r) == "ok" else row_status(r))
+                continue
+            same_run = r.get("carried_from") == base.get("carried_from")
+            cells.append(f"{r['reconstruction_s']:.1f} / {base_map['seconds']:.1f} = "
+                         f"**{r['reconstruction_s'] / base_map['seconds']:.2f}**" + ("" if same_run else " (two runs)"))
+        speed.append(f"| {key} | " + " | ".join(cells) + " |")
+    if ours and any("**" in line for line in speed):
+        L.append("## Speed: our reconstruction seconds / COLMAP mapper seconds (rec × map, target ≤ 0.5)")
+        L.append("")
+        L.append("| scene | " + " | ".join(ours) + " |")
+        L.append("|---|" + "---|" * len(ours))
+        L.extend(speed)
+        L.append("")
     # Observations on the duplicate-structure scenes, from the numbers above.
     obs = []
     for key in scenes:
@@ -496,24 +658,31 @@ def write_markdown(path, meta, rows, scenes):
         if info.get("description"):
             L.append(info["description"])
             L.append("")
-        L.append("| engine | registered | AUC@3 | AUC@5 | AUC@10 | rot err (°) | stages (s) | total (s) | peak MB | × colmap |")
-        L.append("|---|---|---|---|---|---|---|---|---|---|")
+        L.append("| engine | registered | AUC@3 | AUC@5 | AUC@10 | rot err (°) | stages (s) | total (s) | peak MB "
+                 "| × colmap | rec × map |")
+        L.append("|---|---|---|---|---|---|---|---|---|---|---|")
         base = next((r for r in srows if r["engine"] == "colmap" and row_status(r) == "ok"), None)
-        for r in sorted(srows, key=lambda r: ALL_ENGINES.index(r["engine"])):
+        engines_here = engine_order(srows)
+        for r in sorted(srows, key=lambda r: engines_here.index(r["engine"])):
+            name = r["engine"] + (f" † ({r['carried_from']})" if r.get("carried_from") else "")
             if row_status(r) != "ok":
                 note = f" ({r['note']})" if r.get("note") else ""
-                timing = (f" {stage_cell(r)} | {r['total_s']:.1f} | {r['peak_mb']:.0f} |" if r.get("stages")
-                          else " | | |")
-                L.append(f"| {r['engine']} | {r['status']}{note} | | | | |{timing} |")
+                timing = (f" {stage_cell(r)} | {r['total_s']:.1f} | {r['peak_mb']:.0f} |"
+                          if r.get("stages") and row_status(r) != NOT_IMPLEMENTED else " | | |")
+                L.append(f"| {name} | {row_status(r)}{note} | | | | |{timing} | |")
                 continue
             ratio = "–"
             if base is not None and base["total_s"] > 0:
                 ratio = f"{r['total_s'] / base['total_s']:.2f}"
-            L.append(f"| {r['engine']} | {r['registered']}/{r['num_gt']} | {r['auc']['3']:.1f} | "
+            map_ratio = "–"
+            base_map = next((s for s in (base or {}).get("stages", []) if s["name"] == "map"), None)
+            if r["engine"] != "colmap" and r.get("reconstruction_s") is not None and base_map and base_map["seconds"] > 0:
+                map_ratio = f"{r['reconstruction_s'] / base_map['seconds']:.2f}"
+            L.append(f"| {name} | {r['registered']}/{r['num_gt']} | {r['auc']['3']:.1f} | "
                      f"{r['auc']['5']:.1f} | {r['auc']['10']:.1f} | {fmt(r['median_rotation_error_deg'], 2)} | "
-                     f"{stage_cell(r)} | {r['total_s']:.1f} | {r['peak_mb']:.0f} | {ratio} |")
+                     f"{stage_cell(r)} | {r['total_s']:.1f} | {peak_cell(r)} | {ratio} | {map_ratio} |")
             if r.get("note"):
-                L.append(f"|  | note: {r['note']} | | | | | | | | |")
+                L.append(f"|  | note: {r['note']} | | | | | | | | | |")
         L.append("")
     path.parent.mkdir(parents=True, exist_ok=True)
     tmp = path.with_name(path.name + ".tmp")
@@ -525,7 +694,26 @@ def write_markdown(path, meta, rows, scenes):
 # Main
 # ----------------------------------------------------------------------------------------------
 
+def merge_previous(args, meta, rows, keys):
+    """--merge: the previous file's rows for (scene, engine) pairs this run did not produce."""
+    done = {(r["scene"], r["engine"]) for r in rows}
+    merged = list(rows)
+    for r in args.previous_rows:
+        if (r["scene"], r["engine"]) in done:
+            continue
+        merged.append(dict(r, carried_from=r.get("carried_from") or args.previous_date))
+        if r["scene"] not in meta["scenes"]:
+            meta["scenes"][r["scene"]] = args.previous_meta.get("scenes", {}).get(r["scene"], {})
+    canonical = SMALL_SYNTHETIC + list(DATASETS)
+    all_keys = list(dict.fromkeys(keys + [r["scene"] for r in merged]))
+    all_keys.sort(key=lambda k: (canonical.index(k) if k in canonical else len(canonical), k))
+    return merged, all_keys
+
+
 def write_reports(args, meta, rows, keys):
+    if args.merge:
+        meta = json.loads(json.dumps(meta, default=str))  # merge_previous adds the carried scenes
+        rows, keys = merge_previous(args, meta, rows, keys)
     write_markdown(Path(args.output), meta, rows, keys)
     Path(args.json).parent.mkdir(parents=True, exist_ok=True)
     tmp = Path(args.json + ".tmp")
@@ -557,7 +745,42 @@ def parse_args(argv):
                                     "docs/benchmarks_large.md with --large)")
     p.add_argument("--json", help="machine-readable results (default bench/results.json; "
                                   "bench/results_large.json with --large)")
+    p.add_argument("--merge", metavar="PREVIOUS.json",
+                   help="carry over the rows of PREVIOUS.json (an earlier --json) whose (scene, engine) this run "
+                        "does not produce; they are marked with their run's date")
+    p.add_argument("--reuse", action="store_true",
+                   help="reuse the inputs an earlier run left in --work instead of preparing them again: the "
+                        "synthetic databases (no `synth`), the datasets' COLMAP feature/matching database (no "
+                        "`features`/`match`) and COLMAP's verified synthetic databases (COLMAP's `match` not "
+                        "rerun, only `map`); their stage times come from the --merge file (default: the --json "
+                        "file as it is before this run) and are marked as carried. Inputs no longer in --work are "
+                        "prepared again.")
+    p.add_argument("--rewrite_report", action="store_true",
+                   help="run nothing: regenerate --output from the --json file as it is (after a change to the "
+                        "report's layout)")
+    p.add_argument("--prepare_only", action="store_true",
+                   help="only prepare the inputs (synthetic databases; COLMAP feature extraction + matching on "
+                        "the datasets, no mapper) into --work, run no engine and write no report")
+    p.add_argument("--variant", action="append", default=[], metavar="LABEL=ENGINE:ARGS",
+                   help="an extra row LABEL: `prunesfm run --engine ENGINE` with the extra arguments ARGS "
+                        "(split like a shell), e.g. 'GLOBAL+pp=GLOBAL:--refine_principal_point'; repeatable, "
+                        "LABEL is then usable in --engines")
+    p.add_argument("--known_k", default="", metavar="LABELS",
+                   help="comma-separated --variant labels whose database copy gets the dataset's known K "
+                        "(PINHOLE fx fy cx cy from gt_cameras.txt, i.e. Strecha's K.txt) instead of COLMAP's "
+                        "prior camera; datasets only (no row on synthetic scenes)")
     args = p.parse_args(argv)
+    args.variants = {}
+    for v in args.variant:
+        label, sep, rest = v.partition("=")
+        engine, _, extra = rest.partition(":")
+        if not sep or not label or engine not in OUR_ENGINES or label in ALL_ENGINES:
+            p.error(f"--variant {v}: expected LABEL=ENGINE:ARGS with ENGINE in {', '.join(OUR_ENGINES)}")
+        args.variants[label] = (engine, shlex.split(extra))
+    args.known_k = [k for k in args.known_k.split(",") if k]
+    for k in args.known_k:
+        if k not in args.variants:
+            p.error(f"--known_k {k}: not a --variant label")
     work = Path(args.work)
     if args.smoke:
         args.scenes = "clean"
@@ -574,6 +797,14 @@ def parse_args(argv):
 
 def main(argv):
     args = parse_args(argv)
+    if args.rewrite_report:
+        data = json.loads(Path(args.json).read_text())
+        canonical = SMALL_SYNTHETIC + list(DATASETS)
+        keys = list(dict.fromkeys(r["scene"] for r in data["results"]))
+        keys.sort(key=lambda k: (canonical.index(k) if k in canonical else len(canonical), k))
+        write_markdown(Path(args.output), data["meta"], data["results"], keys)
+        print(f"wrote {args.output} from {args.json}")
+        return 0
     work = Path(args.work).resolve()
     work.mkdir(parents=True, exist_ok=True)
     prunesfm = find_prunesfm(args.prunesfm)
@@ -581,8 +812,16 @@ def main(argv):
     colmap = args.colmap if args.colmap and Path(args.colmap).exists() else None
     engines = [e.strip() for e in args.engines.split(",") if e.strip()]
     for e in engines:
-        if e not in ALL_ENGINES:
-            sys.exit(f"run_benchmarks: unknown engine {e} (known: {', '.join(ALL_ENGINES)})")
+        if e not in ALL_ENGINES and e not in args.variants:
+            sys.exit(f"run_benchmarks: unknown engine {e} (known: {', '.join(ALL_ENGINES + list(args.variants))})")
+    previous_path = args.merge or (args.json if args.reuse else None)
+    args.previous_meta, args.previous_rows, args.previous_date = {}, [], None
+    if previous_path:
+        if not Path(previous_path).is_file():
+            sys.exit(f"run_benchmarks: {previous_path} does not exist (--merge / --reuse)")
+        previous = json.loads(Path(previous_path).read_text())
+        args.previous_meta, args.previous_rows = previous["meta"], previous["results"]
+        args.previous_date = previous["meta"]["machine"]["date"]
     if args.large:
         scene_list = [(LARGE_SYNTHETIC, int(n)) for n in args.large.split(",") if n.strip()]
     else:
@@ -594,10 +833,17 @@ def main(argv):
     shown_argv = ["bench/run_benchmarks.py"] + argv
     meta = {"command": " ".join(shlex.quote(a) for a in shown_argv), "machine": machine_info(),
             "prunesfm": str(prunesfm.relative_to(REPO) if prunesfm.is_relative_to(REPO) else prunesfm),
-            "prunesfm_run": caps["run"], "colmap_version": colmap_version(colmap),
+            "prunesfm_run": caps["run"], "prunesfm_run_intrinsics_options": caps["intrinsics_options"],
+            "colmap_version": colmap_version(colmap),
             "settings": {"seed": args.seed, "threads": args.threads, "max_image_size": args.max_image_size,
                          "colmap_camera_model": COLMAP_CAMERA_MODEL, "thresholds_deg": THRESHOLDS},
             "scenes": {}}
+    if args.merge:
+        pm = args.previous_meta
+        meta["merged_from"] = {"file": args.merge, "date": args.previous_date, "command": pm.get("command"),
+                               "git_commit": pm.get("machine", {}).get("git_commit")}
+    if args.variants:
+        meta["variants"] = {k: {"engine": e, "extra_args": x} for k, (e, x) in args.variants.items()}
     rows, keys = [], []
     for name, num_views in scene_list:
         print(f"== {name}{'' if num_views is None else '@' + str(num_views)}", flush=True)
@@ -612,16 +858,26 @@ def main(argv):
             prep = scene["prep"][0]
             desc = (f"Synthetic: `prunesfm synth {' '.join(scene['synth_args'])}` "
                     f"({prep['seconds']:.1f} s, not counted).")
+        if args.prepare_only:
+            print(f"  prepared: {'ok' if scene['ok'] else scene['error']}", flush=True)
+            continue
         keys.append(scene["key"])
         meta["scenes"][scene["key"]] = {"description": desc, "kind": scene["kind"],
                                         "prep": scene["prep"], "shared_stages": scene["shared_stages"]}
+        if scene.get("synth_args"):
+            meta["scenes"][scene["key"]]["synth_args"] = scene["synth_args"]
         for engine in engines:
+            if engine in args.known_k and scene["kind"] != "dataset":
+                continue  # known K only means something on real images
             row = {"scene": scene["key"], "engine": engine, "status": "ok", "note": None}
             rows.append(row)
             if engine == "colmap" and not colmap:
                 row["status"] = "not installed"
                 continue
-            if engine in OUR_ENGINES and not caps["run"]:
+            if engine in args.variants:
+                e, extra = args.variants[engine]
+                row["variant"] = {"engine": e, "extra_args": extra}
+            if engine != "colmap" and not caps["run"]:
                 row["status"] = "not built yet"
                 row["note"] = "`prunesfm run` does not exist in this build"
                 continue
@@ -638,9 +894,20 @@ def main(argv):
             row["stages"] = shared + stages
             row["total_s"] = round(sum(s["seconds"] for s in row["stages"]), 2)
             row["peak_mb"] = max(s["peak_mb"] for s in row["stages"])
+            if engine in args.variants:
+                e, extra = args.variants[engine]
+                variant_note = f"`--engine {' '.join([e] + extra)}`"
+                if engine in args.known_k:
+                    variant_note += (" on a database copy whose camera is the known K (PINHOLE fx fy cx cy of "
+                                     "gt_cameras.txt = K.txt), not COLMAP's prior")
+                note = variant_note + ("; " + note if note else "")
             row["note"] = note
+            run = next((s for s in stages if s["name"] == "run"), None)
+            if run is not None:
+                verification = run.get("breakdown", {}).get("verification", 0.0) if scene["kind"] == "synthetic" else 0.0
+                row["reconstruction_s"] = round(run["seconds"] - verification, 2)
             if any(s["rc"] != 0 for s in stages):
-                row["status"] = "failed"
+                row["status"] = NOT_IMPLEMENTED if NOT_IMPLEMENTED in (note or "") else "failed"
                 continue
             ev, ev_stage = evaluate(prunesfm, model, scene["gt"], work / scene["key"] / engine, args.seed,
                                     args.timeout)
@@ -651,6 +918,9 @@ def main(argv):
                 row["note"] = "evaluate failed, counted as nothing registered: " + ev_stage.get("error", "")
             row["model"] = str(model) if model else None
             write_reports(args, meta, rows, keys)  # partial results survive an interruption
+    if args.prepare_only:
+        print("inputs prepared in", work)
+        return 0
     meta["machine"]["loadavg_end"] = " ".join(f"{x:.2f}" for x in os.getloadavg())
     write_reports(args, meta, rows, keys)
     print(f"wrote {args.output} and {args.json}")
