@@ -50,9 +50,18 @@ void PruneViewGraph(const ViewGraphPruningOptions& options, ViewGraph* graph, co
   size_t done = 0;
   for (const auto& [k1, k2] : connected) {
     ReportProgress(progress, "inter-subgraph pruning", done++, connected.size());
+    const SubgraphSolution& s1 = accepted[static_cast<size_t>(k1)].solution;
+    const SubgraphSolution& s2 = accepted[static_cast<size_t>(k2)].solution;
+    SubgraphAlignmentOptions alignment_options = options.alignment;
+    const size_t num_edges = ConnectingEdges(*graph, s1.view_ids, s2.view_ids).size();
+    if (options.max_sample_size > 0 &&
+        alignment_options.sample_fraction * static_cast<double>(num_edges) >=
+            static_cast<double>(options.max_sample_size + 1)) {
+      alignment_options.sample_fraction =
+          (static_cast<double>(options.max_sample_size) + 0.5) / static_cast<double>(num_edges);
+    }
     const SubgraphAlignmentResult alignment =
-        AlignSubgraphPair(*graph, accepted[static_cast<size_t>(k1)].solution,
-                          accepted[static_cast<size_t>(k2)].solution, views_and_intrinsics, features, options.alignment);
+        AlignSubgraphPair(*graph, s1, s2, views_and_intrinsics, features, alignment_options);
     SubgraphPairReport pair_report;
     pair_report.k1 = k1;
     pair_report.k2 = k2;
@@ -62,7 +71,7 @@ void PruneViewGraph(const ViewGraphPruningOptions& options, ViewGraph* graph, co
     pair_report.beta = alignment.beta;
     for (const InterSubgraphEdgeDecision& decision : alignment.edges) {
       if (decision.kept) continue;
-      const EdgeInvalidation why = InterSubgraphInvalidation(decision, options.alignment);
+      const EdgeInvalidation why = InterSubgraphInvalidation(decision, alignment_options);
       if (!graph->InvalidateEdge(decision.placement.view_i, decision.placement.view_j, why)) continue;
       RemovedEdge removed;
       removed.pair = decision.placement.view_i < decision.placement.view_j
