@@ -13,15 +13,20 @@ function(prunesfm_add_module name)
   set_target_properties(${target} PROPERTIES POSITION_INDEPENDENT_CODE ON)
 endfunction()
 
-# prunesfm_add_test(NAME SOURCES ... DEPENDS ...)
+# prunesfm_add_test(NAME SOURCES ... DEPENDS ... [LABELS ...])
 # One GoogleTest executable per module folder of tests/; every TEST becomes a ctest entry.
-# Tests find the shared data (../shared) through tests/support and skip when it is absent.
+# LABELS: `slow` for end-to-end engine runs (the sanitizer job skips them), `interop` for tests
+# that drive the real colmap executable.
 function(prunesfm_add_test name)
-  cmake_parse_arguments(ARG "" "" "SOURCES;DEPENDS" ${ARGN})
+  cmake_parse_arguments(ARG "" "" "SOURCES;DEPENDS;LABELS" ${ARGN})
   add_executable(${name} ${ARG_SOURCES})
   target_compile_options(${name} PRIVATE ${PRUNESFM_WARNING_FLAGS})
   target_link_libraries(${name} PRIVATE ${ARG_DEPENDS} prunesfm_test_support GTest::gtest GTest::gtest_main)
   # Paths reach the tests as compile definitions of prunesfm_test_support (tests/CMakeLists.txt),
   # not as ctest ENVIRONMENT: a list-valued ENVIRONMENT does not survive gtest_discover_tests.
-  gtest_discover_tests(${name} DISCOVERY_TIMEOUT 60)
+  if(ARG_LABELS)
+    gtest_discover_tests(${name} PROPERTIES LABELS "${ARG_LABELS}" DISCOVERY_TIMEOUT 60)
+  else()
+    gtest_discover_tests(${name} DISCOVERY_TIMEOUT 60)
+  endif()
 endfunction()
