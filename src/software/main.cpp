@@ -24,6 +24,7 @@ int main(int argc, char** argv) {
 
   prunesfm::AddReconstructCommand(app);
   prunesfm::AddRunCommand(app);
+  prunesfm::AddPruneCommand(app);
   prunesfm::AddConvertCommand(app);
   prunesfm::AddEvaluateCommand(app);
   prunesfm::AddSynthCommand(app);

@@ -7,6 +7,8 @@
 #include <filesystem>
 #include <string>
 
+#include "sfm_pruning/global/view_graph_builder.hpp"
+#include "sfm_pruning/pruning/view_graph_pruning.hpp"
 #include "software/commands/reconstruction_input.hpp"
 
 namespace CLI {
@@ -20,10 +22,24 @@ struct EngineSettings {
   uint64_t seed = 0;
   int num_threads = 1;
   std::string positioning = "GLOMAP";  // or TRANSLATION_AVERAGING
+  sfm_pruning::ViewGraphPruningOptions pruning;  // GLOBAL_PRUNED and `prune`
 };
 
-// Adds --engine, --seed, --num_threads and --positioning to `cmd`.
+// Adds --seed, --num_threads and --positioning to `cmd`.
+void AddSolverOptions(CLI::App* cmd, EngineSettings* settings);
+
+// Adds --engine, the solver options and the pruning options (pruning_options.hpp) to `cmd`.
 void AddEngineOptions(CLI::App* cmd, EngineSettings* settings);
+
+// GLOBAL_PRUNED's options from the settings: the pruning options, the positioning of the
+// per-community and final solves, and one seed / thread count for everything.
+sfm_pruning::PrunedGlobalEngineOptions PrunedEngineOptions(const EngineSettings& settings);
+
+// The verified view graph of `input`: its two-view geometries (poses re-estimated from their
+// inliers) or its putative matches, verified. Throws sfm_pruning::Error naming input.source when
+// there is no edge, or when every pair is rejected.
+sfm_pruning::ViewGraph BuildVerifiedViewGraph(const EngineSettings& settings, const ReconstructionInput& input,
+                                              sfm_pruning::ViewGraphBuildReport* report);
 
 // Verifies (when the input holds putative matches), runs the engine and writes the outputs into
 // `output`. Throws sfm_pruning::Error (one line naming input.source) when there is no edge or

@@ -1,0 +1,465 @@
+#!/usr/bin/env python3
+"""Real ambiguous scenes without ground truth (issue 5): books and street of
+<shared>/datasets/ambiguous (Yan et al. 2017). Writes bench/sections/ambiguous.md.
+
+Reference. The images are in capture order, so a reconstruction from neighbour-only pairs never
+sees the doppelgangers (the alike copies are far apart in the sequence): COLMAP 3.8
+`feature_extractor` (one SIMPLE_RADIAL camera, focal from exif_focal.txt as a known prior) +
+`sequential_matcher` (pairs i, i+1 .. i+overlap; no quadratic overlap, no loop detection) +
+`mapper`. The reference is checked, not trusted:
+  - every image registered in one model;
+  - epipolar consistency: the reference's poses and intrinsics give, for every pair COLMAP
+    verified in the *exhaustive* database, the Sampson error of its inlier matches; sequential
+    pairs must fit (median below --max_sampson_px), and so must every far pair that sees the same
+    physical surface. Far pairs that do not fit are the doppelganger pairs (listed: their gap in
+    the sequence and inlier count);
+  - trajectory: the step between consecutive camera centres (largest / median) and no two
+    far-apart images at the same place looking the same way (what folding looks like).
+Then the exhaustive database (same features, `exhaustive_matcher`) is reconstructed by
+GLOBAL, GLOBAL_PRUNED (`prunesfm run`), COLMAP's mapper, and COLMAP's mapper on the database
+`prunesfm prune` cleaned; each model is scored by `prunesfm evaluate` against the reference
+(AUC of pairwise relative pose errors, as for ground truth).
+Python 3 standard library only.
+"""
+
+import json
+import math
+import shutil
+import sqlite3
+import statistics
+import struct
+import sys
+from pathlib import Path
+
+sys.path.insert(0, str(Path(__file__).resolve().parent))
+import bench_support as bs  # noqa: E402
+import run_benchmarks as rb  # noqa: E402
+
+SCENES = {"books": "ambiguous/books", "street": "ambiguous/street"}
+ENGINES = ["GLOBAL", "GLOBAL_PRUNED", "colmap", "colmap+prune"]
+
+
+# ----------------------------------------------------------------------------------------------
+# Small 3-vector / 3x3 algebra (standard library only)
+# ----------------------------------------------------------------------------------------------
+
+def quat_to_rot(qw, qx, qy, qz):
+    n = math.sqrt(qw * qw + qx * qx + qy * qy + qz * qz)
+    w, x, y, z = qw / n, qx / n, qy / n, qz / n
+    return [[1 - 2 * (y * y + z * z), 2 * (x * y - z * w), 2 * (x * z + y * w)],
+            [2 * (x * y + z * w), 1 - 2 * (x * x + z * z), 2 * (y * z - x * w)],
+            [2 * (x * z - y * w), 2 * (y * z + x * w), 1 - 2 * (x * x + y * y)]]
+
+
+def matmul(a, b):
+    return [[sum(a[i][k] * b[k][j] for k in range(3)) for j in range(3)] for i in range(3)]
+
+
+def matvec(a, v):
+    return [sum(a[i][k] * v[k] for k in range(3)) for i in range(3)]
+
+
+def transpose(a):
+    return [[a[j][i] for j in range(3)] for i in range(3)]
+
+
+def sub(a, b):
+    return [a[i] - b[i] for i in range(3)]
+
+
+def norm(v):
+    return math.sqrt(sum(x * x for x in v))
+
+
+def skew(t):
+    return [[0, -t[2], t[1]], [t[2], 0, -t[0]], [-t[1], t[0], 0]]
+
+
+# ----------------------------------------------------------------------------------------------
+# Inputs: exif focal, COLMAP database, COLMAP text model
+# ----------------------------------------------------------------------------------------------
+
+def exif_camera(path):
+    """(width, height, f_px) shared by every image of exif_focal.txt (one camera per scene)."""
+    cams = set()
+    for line in Path(path).read_text().splitlines():
+        if line.strip() and not line.startswith("#"):
+            name, w, h, _, _, f_px = line.split()[:6]
+            cams.add((int(w), int(h), float(f_px)))
+    if len(cams) != 1:
+        sys.exit(f"ambiguous_bench: {path}: expected one camera, found {sorted(cams)}")
+    return cams.pop()
+
+
+def read_database(db_path):
+    """names {image_id: name}, keypoints {image_id: [(x, y)]}, inliers {(id1, id2): [(i, j)]}."""
+    db = sqlite3.connect(str(db_path))
+    try:
+        names = dict(db.execute("SELECT image_id, name FROM images"))
+        keypoints = {}
+        for image_id, rows, cols, data in db.execute("SELECT image_id, rows, cols, data FROM keypoints"):
+            values = struct.unpack(f"<{rows * cols}f", data) if rows else ()
+            keypoints[image_id] = [(values[r * cols], values[r * cols + 1]) for r in range(rows)]
+        inliers = {}
+        for pair_id, rows, data in db.execute("SELECT pair_id, rows, data FROM two_view_geometries WHERE rows > 0"):
+            values = struct.unpack(f"<{rows * 2}I", data)
+            inliers[(pair_id // rb.COLMAP_PAIR_BASE, pair_id % rb.COLMAP_PAIR_BASE)] = \
+                [(values[2 * r], values[2 * r + 1]) for r in range(rows)]
+    finally:
+        db.close()
+    return names, keypoints, inliers
+
+
+def read_text_model(folder):
+    """cameras {id: (model, w, h, params)}, images {name: (R, t, camera_id)} (world to camera)."""
+    cameras, images = {}, {}
+    for line in (Path(folder) / "cameras.txt").read_text().splitlines():
+        if line.strip() and not line.startswith("#"):
+            f = line.split()
+            cameras[int(f[0])] = (f[1], int(f[2]), int(f[3]), [float(x) for x in f[4:]])
+    lines = [l for l in (Path(folder) / "images.txt").read_text().splitlines() if not l.startswith("#")]
+    for line in lines[0::2]:
+        f = line.split()
+        if len(f) < 10:
+            continue
+        images[f[9]] = (quat_to_rot(*map(float, f[1:5])), [float(x) for x in f[5:8]], int(f[8]))
+    return cameras, images
+
+
+def normalized(camera, xy):
+    """Pixel (COLMAP convention) -> undistorted normalized coordinates, for the models the
+    extractor is told to use (SIMPLE_RADIAL; PINHOLE/SIMPLE_PINHOLE for completeness)."""
+    model, _, _, p = camera
+    if model == "SIMPLE_RADIAL":
+        f, cx, cy, k = p
+        fx = fy = f
+    elif model == "SIMPLE_PINHOLE":
+        f, cx, cy = p
+        fx, fy, k = f, f, 0.0
+    elif model == "PINHOLE":
+        fx, fy, cx, cy = p
+        k = 0.0
+    else:
+        sys.exit(f"ambiguous_bench: camera model {model} not handled")
+    ud, vd = (xy[0] - cx) / fx, (xy[1] - cy) / fy
+    u, v = ud, vd
+    for _ in range(20):  # x_d = x_u (1 + k r_u^2): fixed point
+        s = 1.0 + k * (u * u + v * v)
+        u, v = ud / s, vd / s
+    return u, v
+
+
+# ----------------------------------------------------------------------------------------------
+# Preparation (COLMAP)
+# ----------------------------------------------------------------------------------------------
+
+def has_keypoints(db):
+    if not Path(db).is_file():
+        return False
+    try:
+        con = sqlite3.connect(str(db))
+        n = con.execute("SELECT COUNT(*) FROM keypoints WHERE rows > 0").fetchone()[0]
+        con.close()
+        return n > 0
+    except sqlite3.Error:
+        return False
+
+
+def fold_wal(db):
+    """COLMAP 3.8 leaves its last writes in DB-wal: checkpoint them into the file."""
+    con = sqlite3.connect(str(db))
+    try:
+        con.execute("PRAGMA wal_checkpoint(TRUNCATE)")
+    finally:
+        con.close()
+
+
+def prepare(args, scene, work):
+    """base.db (features), sequential.db and exhaustive.db (verified pairs). Returns stage records."""
+    folder = Path(args.shared) / "datasets" / SCENES[scene]
+    images = folder / "images"
+    w, h, f_px = exif_camera(folder / "exif_focal.txt")
+    base, seq, exh = work / "base.db", work / "sequential.db", work / "exhaustive.db"
+    t = str(args.threads)
+    stages = []
+    env = rb.colmap_env()
+    if not (args.reuse and has_keypoints(base)):
+        for p in (base, Path(str(base) + "-wal"), Path(str(base) + "-shm")):
+            p.unlink(missing_ok=True)
+        # A known focal (prior_focal_length = 1) from EXIF; principal point at the centre, k = 0 to start.
+        params = f"{f_px},{w / 2},{h / 2},0"
+        stages.append(rb.run_stage("features", [
+            args.colmap, "feature_extractor", "--database_path", base, "--image_path", images,
+            "--ImageReader.single_camera", "1", "--ImageReader.camera_model", "SIMPLE_RADIAL",
+            "--ImageReader.camera_params", params, "--SiftExtraction.use_gpu", "0",
+            "--SiftExtraction.num_threads", t, "--SiftExtraction.max_image_size", args.max_image_size],
+            work / "features.log", args.timeout, env))
+        if stages[-1]["rc"] != 0:
+            sys.exit(f"ambiguous_bench: {scene}: feature_extractor failed: {stages[-1].get('error')}")
+        fold_wal(base)
+    matchers = [
+        ("sequential", seq, ["sequential_matcher", "--SequentialMatching.overlap", str(args.overlap),
+                             "--SequentialMatching.quadratic_overlap", "0",
+                             "--SequentialMatching.loop_detection", "0"]),
+        ("exhaustive", exh, ["exhaustive_matcher"]),
+    ]
+    for name, db, matcher in matchers:
+        if args.reuse and rb.num_verified_pairs(db) > 0:
+            continue
+        rb.copy_database(base, db)
+        stages.append(rb.run_stage(name, [args.colmap, *matcher, "--database_path", db,
+                                          "--SiftMatching.use_gpu", "0", "--SiftMatching.num_threads", t],
+                                   work / f"{name}.log", args.timeout, env))
+        if stages[-1]["rc"] != 0:
+            sys.exit(f"ambiguous_bench: {scene}: {matcher[0]} failed: {stages[-1].get('error')}")
+        fold_wal(db)
+    return images, (w, h, f_px), stages
+
+
+def build_reference(args, work, images):
+    """COLMAP's mapper on the sequential database; the largest model, also as text."""
+    ref = work / "reference"
+    txt = ref / "text"
+    stages = []
+    model, num_models = rb.largest_model(ref / "sparse")
+    if not (args.reuse and model is not None and (txt / "images.txt").is_file()):
+        if ref.exists():
+            shutil.rmtree(ref)
+        db = work / "reference.db"
+        rb.copy_database(work / "sequential.db", db)
+        stage, model = bs.colmap_mapper(args.colmap, db, images, ref, str(args.threads), args.timeout, False)
+        stages.append(stage)
+        if model is None:
+            sys.exit(f"ambiguous_bench: the reference mapper made no model (see {ref / 'map.log'})")
+        txt.mkdir(parents=True)
+        rb.run_stage("convert", [args.colmap, "model_converter", "--input_path", model, "--output_path", txt,
+                                 "--output_type", "TXT"], ref / "convert.log", args.timeout, rb.colmap_env())
+        _, num_models = rb.largest_model(ref / "sparse")
+    return model, num_models, txt, stages
+
+
+# ----------------------------------------------------------------------------------------------
+# Checking the reference
+# ----------------------------------------------------------------------------------------------
+
+def pair_sampson_px(cameras, images, names, keypoints, pair, matches):
+    """Median Sampson error (pixels, focal-scaled) of a pair's inliers under the reference poses."""
+    n1, n2 = names[pair[0]], names[pair[1]]
+    if n1 not in images or n2 not in images:
+        return None
+    R1, t1, c1 = images[n1]
+    R2, t2, c2 = images[n2]
+    R = matmul(R2, transpose(R1))
+    t = sub(t2, matvec(R, t1))
+    E = matmul(skew(t), R)
+    Et = transpose(E)
+    focal = 0.5 * (cameras[c1][3][0] + cameras[c2][3][0])
+    errors = []
+    for i, j in matches:
+        u1, v1 = normalized(cameras[c1], keypoints[pair[0]][i])
+        u2, v2 = normalized(cameras[c2], keypoints[pair[1]][j])
+        x1, x2 = [u1, v1, 1.0], [u2, v2, 1.0]
+        Ex1, Etx2 = matvec(E, x1), matvec(Et, x2)
+        num = sum(x2[k] * Ex1[k] for k in range(3))
+        den = Ex1[0] ** 2 + Ex1[1] ** 2 + Etx2[0] ** 2 + Etx2[1] ** 2
+        errors.append(math.sqrt(num * num / den) * focal if den > 0 else float("inf"))
+    return statistics.median(errors)
+
+
+def check_reference(args, work, txt, num_models):
+    cameras, images = read_text_model(txt)
+    names, keypoints, inliers = read_database(work / "exhaustive.db")
+    order = {name: k for k, name in enumerate(sorted(names.values()))}
+    check = {"images": len(names), "registered": len(images), "models": num_models}
+    pairs = []
+    for pair, matches in sorted(inliers.items()):
+        gap = abs(order[names[pair[0]]] - order[names[pair[1]]])
+        err = pair_sampson_px(cameras, images, names, keypoints, pair, matches)
+        pairs.append({"pair": list(pair), "names": [names[pair[0]], names[pair[1]]], "gap": gap,
+                      "inliers": len(matches), "sampson_px": None if err is None else round(err, 3)})
+    fits = lambda p: p["sampson_px"] is not None and p["sampson_px"] <= args.max_sampson_px  # noqa: E731
+    near = [p for p in pairs if p["gap"] <= args.overlap]
+    far = [p for p in pairs if p["gap"] > args.overlap]
+    check["sequential_pairs"] = len(near)
+    check["sequential_pairs_fitting"] = sum(fits(p) for p in near)
+    check["sequential_median_sampson_px"] = round(statistics.median(
+        [p["sampson_px"] for p in near if p["sampson_px"] is not None] or [float("nan")]), 3)
+    check["far_pairs"] = len(far)
+    check["far_pairs_fitting"] = sum(fits(p) for p in far)
+    check["doppelganger_pairs"] = [p for p in far if not fits(p)]
+    check["sequential_pairs_not_fitting"] = [p for p in near if not fits(p)]
+    # Trajectory: centres in capture order.
+    seq = sorted(images, key=lambda n: order.get(n, 0))
+    centres = {n: [-x for x in matvec(transpose(images[n][0]), images[n][1])] for n in seq}
+    axis = {n: images[n][0][2] for n in seq}  # viewing direction = third row of R
+    steps = [norm(sub(centres[b], centres[a])) for a, b in zip(seq, seq[1:])]
+    median_step = statistics.median(steps) if steps else float("nan")
+    check["median_step"] = median_step
+    check["max_step_ratio"] = round(max(steps) / median_step, 2) if steps and median_step > 0 else None
+    merged = []
+    for a in range(len(seq)):
+        for b in range(a + args.overlap + 1, len(seq)):
+            dist = norm(sub(centres[seq[a]], centres[seq[b]]))
+            cosang = sum(axis[seq[a]][k] * axis[seq[b]][k] for k in range(3))
+            if dist < 0.3 * median_step and cosang > math.cos(math.radians(15)):
+                merged.append([seq[a], seq[b]])
+    check["merged_far_images"] = merged
+    check["pairs"] = pairs
+    return check
+
+
+# ----------------------------------------------------------------------------------------------
+# Engines
+# ----------------------------------------------------------------------------------------------
+
+def removed_pairs_of(report):
+    return {tuple(sorted(e["pair"])) for e in report.get("removed_edges", [])}
+
+
+def run_engine(args, prunesfm, engine, work, images):
+    out = work / engine
+    if out.exists():
+        shutil.rmtree(out)
+    out.mkdir(parents=True)
+    db = out / "database.db"
+    rb.copy_database(work / "exhaustive.db", db)
+    t = str(args.threads)
+    row = {"engine": engine, "stages": []}
+    if engine in ("GLOBAL", "GLOBAL_PRUNED"):
+        result = out / "result"
+        stage = rb.run_stage("run", [prunesfm, "run", "--database", db, "--image_path", images, "--output_path",
+                                     result, "--engine", engine, "--num_threads", t, "--seed", str(args.seed)],
+                             out / "run.log", args.timeout)
+        row["stages"].append(stage)
+        model, _ = rb.largest_model(result / "sparse")
+        report = result / "pruning_report.json"
+        if report.is_file():
+            row["removed"] = sorted(removed_pairs_of(json.loads(report.read_text())))
+        return row, model
+    if engine == "colmap+prune":
+        pruned = out / "pruned.db"
+        stage, report = bs.prune_database(prunesfm, db, pruned, out, t, str(args.seed), args.timeout)
+        row["stages"].append(stage)
+        if report is None:
+            return row, None
+        row["removed"] = sorted(removed_pairs_of(report))
+        db = pruned
+    stage, model = bs.colmap_mapper(args.colmap, db, images, out, t, args.timeout, False)
+    row["stages"].append(stage)
+    return row, model
+
+
+# ----------------------------------------------------------------------------------------------
+# Report
+# ----------------------------------------------------------------------------------------------
+
+def markdown(args, argv, prunesfm, results):
+    L = bs.header_lines("Real ambiguous scenes against a sequential-matching reference (books, street)", argv,
+                        prunesfm, args.colmap)
+    L += [f"No ground truth exists for these scenes (`{args.shared}/datasets/ambiguous`, Yan et al. 2017). "
+          "The images are in capture order, so a reconstruction from neighbour-only pairs never matches the "
+          "doppelgangers: COLMAP 3.8 `feature_extractor` (one SIMPLE_RADIAL camera; **the EXIF focal of "
+          "`exif_focal.txt` is given as a known prior**, `--ImageReader.camera_params f,w/2,h/2,0`, so every "
+          "engine starts from it), `sequential_matcher` with pairs i, i+1 .. "
+          f"i+{args.overlap} (no quadratic overlap, no loop detection), then `mapper` = the reference. "
+          "The exhaustive database has the same features, `exhaustive_matcher`. Every engine runs on a copy "
+          "of it; `colmap+prune` is COLMAP's mapper on the copy `prunesfm prune` cleaned. AUC@3/5/10 of "
+          "the pairwise relative pose errors against the reference (`prunesfm evaluate --estimate M "
+          "--ground_truth REF`). Target (issue 5): GLOBAL_PRUNED AUC@5 ≥ 90.", "",
+          "How the reference is checked: (1) every image registered in one model; (2) epipolar "
+          "consistency: under the reference's poses and intrinsics, the median Sampson error of the "
+          "inlier matches of *every pair COLMAP verified in the exhaustive database*; sequential pairs "
+          f"must fit (≤ {args.max_sampson_px} px), far pairs that see the same surface fit too, and the "
+          "far pairs that do not fit are the doppelganger pairs (their matches are between alike copies, "
+          "so no single pose explains them); (3) the trajectory: largest / median step between "
+          "consecutive camera centres, and no two images more than "
+          f"{args.overlap} frames apart placed at the same spot looking the same way (< 0.3 median "
+          "step, < 15°), which is what folding would produce.", ""]
+    L += ["| scene | registered | seq. pairs fitting (median Sampson px) | far pairs fitting | doppelganger "
+          "pairs (gap: inliers) | largest / median step | far images merged |",
+          "|---|---|---|---|---|---|---|"]
+    for scene, r in results.items():
+        c = r["check"]
+        dopp = ", ".join(f"{p['names'][0][:-4]}–{p['names'][1][:-4]} ({p['gap']}: {p['inliers']})"
+                         for p in c["doppelganger_pairs"][:12])
+        more = len(c["doppelganger_pairs"]) - 12
+        dopp = f"{len(c['doppelganger_pairs'])}: {dopp}" + (f", … {more} more" if more > 0 else "")
+        L.append(f"| {scene} | {c['registered']}/{c['images']} in {c['models']} model(s) "
+                 f"| {c['sequential_pairs_fitting']}/{c['sequential_pairs']} ({c['sequential_median_sampson_px']}) "
+                 f"| {c['far_pairs_fitting']}/{c['far_pairs']} | {dopp} | {c['max_step_ratio']} "
+                 f"| {len(c['merged_far_images'])} |")
+    L.append("")
+    L += ["| scene | engine | registered | AUC@3 | AUC@5 | AUC@10 | removed pairs (doppelganger / fitting) "
+          "| stages (s) |", "|---|---|---|---|---|---|---|---|"]
+    for scene, r in results.items():
+        dopp = {tuple(p["pair"]) for p in r["check"]["doppelganger_pairs"]}
+        for row in r["engines"]:
+            e = row["eval"]
+            removed = "–"
+            if "removed" in row:
+                rem = {tuple(p) for p in row["removed"]}
+                removed = f"{len(rem)} ({len(rem & dopp)} / {len(rem - dopp)})"
+            stages = " · ".join(f"{s['name']} {s['seconds']:.1f}" + ("" if s["rc"] == 0 else " (failed)")
+                                for s in row["stages"])
+            L.append(f"| {scene} | {row['engine']} | {e['registered']}/{r['check']['images']} | "
+                     f"{e['auc']['3']:.1f} | {e['auc']['5']:.1f} | {e['auc']['10']:.1f} | {removed} | {stages} |")
+    L.append("")
+    return L
+
+
+def parse_args(argv):
+    p = bs.argument_parser(__doc__, "/tmp/prunesfm-bench-ambiguous")
+    p.add_argument("--scenes", default=",".join(SCENES))
+    p.add_argument("--engines", default=",".join(ENGINES))
+    p.add_argument("--overlap", type=int, default=3, help="sequential pairs: i with i+1 .. i+overlap")
+    p.add_argument("--max_sampson_px", type=float, default=4.0,
+                   help="a pair fits the reference when its inliers' median Sampson error is below this")
+    p.add_argument("--max_image_size", type=int, default=3200, help="COLMAP SiftExtraction.max_image_size")
+    p.add_argument("--reuse", action="store_true",
+                   help="keep the features, matches and reference an earlier run left in --work")
+    p.add_argument("--prepare_only", action="store_true", help="features, matching, reference and its check only")
+    return p.parse_args(argv)
+
+
+def main(argv):
+    args = parse_args(argv)
+    if not args.colmap:
+        sys.exit("ambiguous_bench: needs Debian's colmap on the PATH (or --colmap)")
+    prunesfm = rb.find_prunesfm(args.prunesfm)
+    engines = [e for e in args.engines.split(",") if e]
+    for e in engines:
+        if e not in ENGINES:
+            sys.exit(f"ambiguous_bench: unknown engine {e} (known: {', '.join(ENGINES)})")
+    results = {}
+    for scene in [s for s in args.scenes.split(",") if s]:
+        if scene not in SCENES:
+            sys.exit(f"ambiguous_bench: unknown scene {scene} (known: {', '.join(SCENES)})")
+        print(f"== {scene}", flush=True)
+        work = Path(args.work).resolve() / scene
+        work.mkdir(parents=True, exist_ok=True)
+        images, camera, prep = prepare(args, scene, work)
+        model, num_models, txt, ref_stages = build_reference(args, work, images)
+        check = check_reference(args, work, txt, num_models)
+        (work / "reference_check.json").write_text(json.dumps(check, indent=2) + "\n")
+        print(f"  reference: {check['registered']}/{check['images']} registered, sequential pairs fitting "
+              f"{check['sequential_pairs_fitting']}/{check['sequential_pairs']}, far pairs fitting "
+              f"{check['far_pairs_fitting']}/{check['far_pairs']}, doppelganger pairs "
+              f"{len(check['doppelganger_pairs'])}", flush=True)
+        result = {"camera": camera, "prep": prep + ref_stages, "check": check, "engines": []}
+        if not args.prepare_only:
+            for engine in engines:
+                row, estimate = run_engine(args, prunesfm, engine, work, images)
+                row["eval"] = bs.evaluate_against(prunesfm, estimate, model, work / engine, str(args.seed),
+                                                  args.timeout)
+                print(f"  {engine}: {row['eval']}", flush=True)
+                result["engines"].append(row)
+        results[scene] = result
+    out = Path(args.work) / "results.json"
+    out.write_text(json.dumps(results, indent=2) + "\n")
+    if not args.prepare_only:
+        bs.write_fragment("ambiguous", markdown(args, ["bench/ambiguous_bench.py"] + argv, prunesfm, results))
+    return 0
+
+
+if __name__ == "__main__":
+    sys.exit(main(sys.argv[1:]))

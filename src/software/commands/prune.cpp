@@ -1,0 +1,158 @@
+// prunesfm prune: the view-graph pruning of GLOBAL_PRUNED as a filter for other tools. It builds
+// the verified view graph of the input, prunes it (PruneViewGraph), and writes the input again
+// without the removed pairs, so COLMAP's or GLOMAP's mapper (or OpenMVG's) runs on a cleaned
+// graph:
+//   --database DB --output DB2: a copy of the COLMAP database whose two_view_geometries rows of
+//       the removed pairs are deleted (everything else byte for byte, the matches table too:
+//       the mappers build their correspondence graph from two_view_geometries only);
+//   --sfm_data S --matches_dir D --output M: the OpenMVG match file without the removed pairs.
+// Only the edges the pruning removes are dropped; pairs our verification rejects are kept (the
+// input tool accepted them and may judge them differently). Plus the pruning report (JSON).
+#include <CLI/CLI.hpp>
+
+#include <chrono>
+#include <memory>
+#include <set>
+
+#include "sfm_pruning/io/colmap_database.hpp"
+#include "sfm_pruning/io/openmvg_matches.hpp"
+#include "sfm_pruning/util/error.hpp"
+#include "software/cli_support.hpp"
+#include "software/commands.hpp"
+#include "software/commands/pruning_options.hpp"
+#include "software/commands/pruning_report_json.hpp"
+#include "software/commands/reconstruction_pipeline.hpp"
+
+namespace prunesfm {
+namespace {
+namespace fs = std::filesystem;
+using sfm_pruning::Error;
+using sfm_pruning::ViewPair;
+
+struct PruneArguments {
+  EngineSettings settings;
+  std::string database;
+  std::string sfm_data;
+  std::string matches_dir;
+  std::string match_file;
+  std::string output;
+  std::string report;
+};
+
+class StageClock {
+ public:
+  double Lap() {
+    const auto now = std::chrono::steady_clock::now();
+    const double seconds = std::chrono::duration<double>(now - last_).count();
+    last_ = now;
+    return seconds;
+  }
+
+ private:
+  std::chrono::steady_clock::time_point last_ = std::chrono::steady_clock::now();
+};
+
+// Every pair the input holds (verified or only matched), minus the removed ones.
+std::set<ViewPair> PairsToKeep(const ReconstructionInput& input, const std::set<ViewPair>& removed) {
+  std::set<ViewPair> keep;
+  for (const auto& [pair, geometry] : input.verified) {
+    if (removed.count(pair) == 0) keep.insert(pair);
+  }
+  for (const auto& [pair, matches] : input.putative) {
+    if (removed.count(pair) == 0) keep.insert(pair);
+  }
+  return keep;
+}
+
+void RunPrune(const PruneArguments& args) {
+  const bool colmap = !args.database.empty();
+  if (colmap == !args.sfm_data.empty()) {
+    throw Error("prune: give either --database, or --sfm_data with --matches_dir");
+  }
+  if (!colmap && args.matches_dir.empty()) throw Error("prune: --sfm_data needs --matches_dir");
+  const fs::path output = args.output;
+  const fs::path report_path =
+      args.report.empty() ? fs::path(output).replace_extension(".pruning_report.json") : fs::path(args.report);
+  if (report_path == output) throw Error(output.string() + ": --report must differ from --output");
+
+  StageClock clock;
+  const ReconstructionInput input =
+      colmap ? ReadColmapInput(args.database)
+             : ReadOpenMvgInput(args.sfm_data, args.matches_dir, args.match_file, TerminalProgressBar());
+  if (colmap && input.verified.empty()) {
+    throw Error(args.database +
+                ": no two-view geometries to prune (verify the matches first, e.g. colmap exhaustive_matcher)");
+  }
+  const double read_seconds = clock.Lap();
+
+  sfm_pruning::ViewGraphBuildReport build;
+  sfm_pruning::ViewGraph graph = BuildVerifiedViewGraph(args.settings, input, &build);
+  const double verify_seconds = clock.Lap();
+  Info("view graph: " + std::to_string(graph.NumValidEdges()) + " edges of " + std::to_string(build.num_pairs) +
+       " pairs, " + std::to_string(graph.NumNodes()) + " views");
+
+  const sfm_pruning::PrunedGlobalEngineOptions options = PrunedEngineOptions(args.settings);
+  sfm_pruning::ViewGraphPruningReport pruning;
+  PruneViewGraph(options.pruning, &graph, input.scene, input.features, &pruning, TerminalProgressBar());
+  const double prune_seconds = clock.Lap();
+  Info("pruning: " + PruningSummary(pruning));
+
+  std::set<ViewPair> removed;
+  for (const sfm_pruning::RemovedEdge& edge : pruning.removed_edges) removed.insert(edge.pair);
+  const std::set<ViewPair> keep = PairsToKeep(input, removed);
+  size_t num_pairs = 0;
+  if (colmap) {
+    num_pairs = input.verified.size();
+    sfm_pruning::CopyColmapDatabaseKeepingPairs(args.database, output, keep);
+  } else {
+    num_pairs = input.putative.size();
+    sfm_pruning::PairwiseMatches kept;
+    for (const auto& [pair, matches] : input.putative) {
+      if (keep.count(pair) != 0) kept.emplace(pair, matches);
+    }
+    sfm_pruning::WriteOpenMvgMatches(output, kept);
+  }
+  const double write_seconds = clock.Lap();
+
+  nlohmann::json report = PruningReportJson(pruning);
+  report["filter"] = {{"input", colmap ? args.database : input.source},
+                      {"output", output.string()},
+                      {"format", colmap ? "colmap_database" : "openmvg_matches"},
+                      {"input_pairs", num_pairs},
+                      {"removed_pairs", removed.size()},
+                      {"rejected_by_verification_kept", build.rejected_pairs.size()},
+                      {"seed", args.settings.seed},
+                      {"num_threads", args.settings.num_threads},
+                      {"seconds",
+                       {{"read input", read_seconds},
+                        {"verification", verify_seconds},
+                        {"pruning", prune_seconds},
+                        {"write output", write_seconds}}}};
+  WriteJsonAtomically(report, report_path);
+  Info("wrote " + output.string() + " (" + std::to_string(num_pairs - removed.size()) + " of " +
+       std::to_string(num_pairs) + " pairs kept) and " + report_path.string());
+}
+
+}  // namespace
+
+void AddPruneCommand(CLI::App& app) {
+  auto* cmd = app.add_subcommand(
+      "prune",
+      "Remove spurious two-view geometries (GLOBAL_PRUNED's view-graph pruning) for another mapper.\n"
+      "COLMAP: --database DB --output DB2 writes a copy of DB without the removed pairs'\n"
+      "two_view_geometries (run 'colmap mapper' or 'glomap mapper' on DB2). OpenMVG: --sfm_data +\n"
+      "--matches_dir --output MATCHES(.bin|.txt) writes the match file without them. Also writes\n"
+      "the pruning report (JSON; default: OUTPUT with the extension .pruning_report.json).");
+  auto args = std::make_shared<PruneArguments>();
+  cmd->add_option("--database_path,--database", args->database, "COLMAP database.db with two-view geometries");
+  cmd->add_option("--sfm_data", args->sfm_data, "OpenMVG sfm_data.json/.bin with views and intrinsics");
+  cmd->add_option("--matches_dir", args->matches_dir, "Folder of the .feat files and the match file");
+  cmd->add_option("--match_file", args->match_file, "Match file (default: matches.e/f/putative .bin/.txt)");
+  cmd->add_option("--output,-o", args->output, "Pruned database, or pruned OpenMVG match file")->required();
+  cmd->add_option("--report", args->report, "Pruning report JSON (default: OUTPUT.pruning_report.json)");
+  AddSolverOptions(cmd, &args->settings);
+  AddPruningOptions(cmd, &args->settings.pruning);
+  cmd->callback([args]() { RunPrune(*args); });
+}
+
+}  // namespace prunesfm

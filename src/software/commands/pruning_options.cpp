@@ -1,0 +1,73 @@
+#include "software/commands/pruning_options.hpp"
+
+#include <CLI/CLI.hpp>
+
+namespace prunesfm {
+
+void AddPruningOptions(CLI::App* cmd, sfm_pruning::ViewGraphPruningOptions* options) {
+  CLI::App* group = cmd->add_option_group("Pruning", "View-graph pruning (GLOBAL_PRUNED, prune); paper values");
+  sfm_pruning::RecursivePartitionOptions& partition = options->partition;
+  sfm_pruning::ConsistencyTestOptions& consistency = partition.consistency;
+  sfm_pruning::SubgraphAlignmentOptions& alignment = options->alignment;
+
+  // Subgraph partition.
+  group->add_option("--prune_recursive", partition.recursive,
+                    "Partition inconsistent communities again (false: one Louvain pass, ablation)")
+      ->capture_default_str();
+  group->add_option("--prune_max_depth", partition.max_depth, "Depth at which communities are no longer split")
+      ->check(CLI::NonNegativeNumber)
+      ->capture_default_str();
+  group->add_option("--prune_louvain_resolution", partition.louvain.resolution,
+                    "Modularity resolution gamma of Louvain (1 = classic modularity)")
+      ->check(CLI::PositiveNumber)
+      ->capture_default_str();
+
+  // Consistency tests of a community's solution.
+  group->add_option("--prune_loop_test", consistency.test_loops, "Loop rotation consistency test on/off")
+      ->capture_default_str();
+  group->add_option("--prune_relative_rotation_test", consistency.test_relative_rotation,
+                    "Relative-to-absolute rotation test (e_r) on/off")
+      ->capture_default_str();
+  group->add_option("--prune_relative_translation_test", consistency.test_relative_translation,
+                    "Translation direction test (e_t) on/off")
+      ->capture_default_str();
+  group->add_option("--prune_loop_step_deg", consistency.loop_step_deg,
+                    "A loop of l cameras may deviate by this * floor((l-1)/2) degrees")
+      ->check(CLI::PositiveNumber)
+      ->capture_default_str();
+  group->add_option("--prune_max_loop_length", consistency.cycles.max_cycle_length,
+                    "Longest loop tested, in cameras (paper: fewer than 8)")
+      ->check(CLI::Range(3, 64))
+      ->capture_default_str();
+  group->add_option("--prune_max_relative_rotation_error_deg", consistency.max_relative_rotation_error_deg,
+                    "e_r threshold")
+      ->check(CLI::PositiveNumber)
+      ->capture_default_str();
+  group->add_option("--prune_max_relative_translation_error_deg", consistency.max_relative_translation_error_deg,
+                    "e_t threshold")
+      ->check(CLI::PositiveNumber)
+      ->capture_default_str();
+
+  // Inter-subgraph RANSAC.
+  group->add_option("--prune_ransac_iterations", alignment.num_iterations,
+                    "RANSAC rounds per pair of subgraphs (paper ablation: 20 / 30 / 40)")
+      ->check(CLI::PositiveNumber)
+      ->capture_default_str();
+  group->add_option("--prune_sample_fraction", alignment.sample_fraction,
+                    "Fraction of the connecting edges drawn per RANSAC round")
+      ->check(CLI::Range(0.0, 1.0))
+      ->capture_default_str();
+  group->add_option("--prune_max_sample_size", options->max_sample_size,
+                    "Cap on the RANSAC sample of a pair (0: no cap, the plain fraction)")
+      ->capture_default_str();
+  group->add_option("--prune_max_rotation_deviation_deg", alignment.max_rotation_deviation_deg,
+                    "E_r: rotation deviation of an edge from the RANSAC hypothesis")
+      ->check(CLI::PositiveNumber)
+      ->capture_default_str();
+  group->add_option("--prune_max_translation_deviation", alignment.max_translation_deviation_fraction,
+                    "E_t: translation deviation of an edge as a fraction of |mean t|")
+      ->check(CLI::PositiveNumber)
+      ->capture_default_str();
+}
+
+}  // namespace prunesfm

@@ -1,0 +1,17 @@
+// The command-line options of the view-graph pruning (GLOBAL_PRUNED in reconstruct/run, and
+// `prunesfm prune`): every threshold, the RANSAC iteration count and sample fraction, recursion
+// and each consistency test on/off, with the paper's values as defaults (METHOD.md §3–4).
+#pragma once
+
+#include "sfm_pruning/pruning/view_graph_pruning.hpp"
+
+namespace CLI {
+class App;
+}
+
+namespace prunesfm {
+
+// Adds the pruning options to `cmd` (in an option group "Pruning"), bound to `options`.
+void AddPruningOptions(CLI::App* cmd, sfm_pruning::ViewGraphPruningOptions* options);
+
+}  // namespace prunesfm

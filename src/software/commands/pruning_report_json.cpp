@@ -1,0 +1,96 @@
+#include "software/commands/pruning_report_json.hpp"
+
+#include <cstdio>
+
+#include "sfm_pruning/util/atomic_file.hpp"
+
+namespace prunesfm {
+namespace {
+
+nlohmann::json ViewPairJson(const sfm_pruning::ViewPair& pair) { return nlohmann::json::array({pair.first, pair.second}); }
+
+}  // namespace
+
+nlohmann::json PruningReportJson(const sfm_pruning::ViewGraphPruningReport& pruning) {
+  using namespace sfm_pruning;
+  const auto summary = [](const ErrorSummary& s) {
+    return nlohmann::json{{"count", s.count}, {"max_deg", s.max_deg}, {"median_deg", s.median_deg}};
+  };
+  nlohmann::json nodes = nlohmann::json::array();
+  for (size_t i = 0; i < pruning.partition.nodes.size(); ++i) {
+    const SubgraphNode& node = pruning.partition.nodes[i];
+    nlohmann::json entry = {{"id", i},
+                            {"parent", node.parent},
+                            {"depth", node.depth},
+                            {"size", node.view_ids.size()},
+                            {"edges", node.num_edges},
+                            {"status", SubgraphStatusName(node.status)},
+                            {"children", node.children},
+                            {"accepted_index", node.accepted_index},
+                            {"seconds", node.seconds}};
+    if (node.solved) {
+      entry["engine_success"] = node.engine_success;
+      if (!node.engine_message.empty()) entry["engine_message"] = node.engine_message;
+      entry["registered"] = node.num_registered;
+      entry["landmarks"] = node.num_landmarks;
+    }
+    if (node.consistency_tested) {
+      size_t counts[3] = {0, 0, 0};
+      for (const ConsistencyViolation& v : node.consistency.violations) ++counts[static_cast<int>(v.test)];
+      entry["consistent"] = node.consistency.consistent;
+      entry["violations"] = {{"loop", counts[0]}, {"relative_rotation", counts[1]}, {"relative_translation", counts[2]}};
+      entry["loop_error"] = summary(node.consistency.loop_error);
+      entry["relative_rotation_error"] = summary(node.consistency.relative_rotation_error);
+      entry["relative_translation_error"] = summary(node.consistency.relative_translation_error);
+    }
+    entry["view_ids"] = node.view_ids;
+    nodes.push_back(std::move(entry));
+  }
+  nlohmann::json pairs = nlohmann::json::array();
+  for (const SubgraphPairReport& pair : pruning.pairs) {
+    pairs.push_back({{"k1", pair.k1},
+                     {"k2", pair.k2},
+                     {"status", SubgraphAlignmentStatusName(pair.status)},
+                     {"edges", pair.num_edges},
+                     {"voting_edges", pair.num_voting_edges},
+                     {"removed_edges", pair.num_removed_edges},
+                     {"beta", pair.beta}});
+  }
+  nlohmann::json removed = nlohmann::json::array();
+  for (const RemovedEdge& edge : pruning.removed_edges) {
+    removed.push_back({{"pair", ViewPairJson(edge.pair)},
+                       {"k1", edge.k1},
+                       {"k2", edge.k2},
+                       {"verdict", InterSubgraphVerdictName(edge.verdict)},
+                       {"reason", EdgeInvalidReasonName(edge.invalidation.reason)},
+                       {"value", edge.invalidation.value},
+                       {"threshold", edge.invalidation.threshold}});
+  }
+  nlohmann::json phases = nlohmann::json::array();
+  for (const StageTiming& timing : pruning.timings) phases.push_back({{"stage", timing.stage}, {"seconds", timing.seconds}});
+  return {{"edges_in", pruning.num_input_edges},
+          {"edges_out", pruning.num_output_edges},
+          {"num_subgraphs", pruning.partition.accepted.size()},
+          {"engine_runs", pruning.partition.num_engine_runs},
+          {"phases", std::move(phases)},
+          {"total_seconds", pruning.total_seconds},
+          {"tree", std::move(nodes)},
+          {"subgraph_pairs", std::move(pairs)},
+          {"removed_edges", std::move(removed)}};
+}
+
+void WriteJsonAtomically(const nlohmann::json& report, const std::filesystem::path& path) {
+  sfm_pruning::WriteFileAtomically(path, false, [&](std::ostream& out) { out << report.dump(2) << "\n"; });
+}
+
+std::string PruningSummary(const sfm_pruning::ViewGraphPruningReport& pruning) {
+  char seconds[32];
+  std::snprintf(seconds, sizeof(seconds), "%.2f", pruning.total_seconds);
+  return std::to_string(pruning.partition.accepted.size()) + " subgraphs (" +
+         std::to_string(pruning.partition.nodes.size()) + " tree nodes, " +
+         std::to_string(pruning.partition.num_engine_runs) + " engine runs), removed " +
+         std::to_string(pruning.removed_edges.size()) + " of " + std::to_string(pruning.num_input_edges) +
+         " edges in " + std::to_string(pruning.pairs.size()) + " subgraph pairs, " + seconds + " s";
+}
+
+}  // namespace prunesfm

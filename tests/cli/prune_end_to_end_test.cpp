@@ -1,0 +1,138 @@
+// prunesfm prune end to end on a 20-view symmetric orbit (the front and back of the object look
+// alike, so about a third of the pairs match twin copies): the pruned COLMAP database lacks
+// exactly the pairs the report removes and nothing else changes; the OpenMVG match file likewise;
+// the same seed gives the same bytes; the removed pairs are mostly the spurious ones.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <filesystem>
+#include <fstream>
+#include <iterator>
+#include <set>
+
+#include <nlohmann/json.hpp>
+
+#include "run_prunesfm.hpp"
+#include "sfm_pruning/io/colmap_database.hpp"
+#include "sfm_pruning/io/openmvg_matches.hpp"
+#include "support/test_data.hpp"
+
+namespace sfm_pruning::testing {
+namespace {
+namespace fs = std::filesystem;
+
+// The scene, and a copy of its database with every putative pair stored as a two-view geometry
+// without pose, as COLMAP 3.8's matcher leaves it (the inliers here still hold the injected
+// outliers: prune re-estimates every pose from them).
+const fs::path& OrbitProject() {
+  static const fs::path dir = []() {
+    const std::string test_name = ::testing::UnitTest::GetInstance()->current_test_info()->name();
+    const fs::path out = ScratchDir("cli_prune_orbit_" + test_name) / "orbit";
+    const CommandResult result = RunPrunesfm(
+        {"synth", "--scene", "orbit_symmetric", "--seed", "3", "--num_views", "20", "--output", out.string()});
+    EXPECT_EQ(result.exit_code, 0) << result.err;
+    ColmapDatabase database = ReadColmapDatabase(out / "database.db");
+    for (const auto& [pair, matches] : database.putative) {
+      database.verified[pair].inliers = matches;
+      database.verified[pair].config = static_cast<int>(ColmapTwoViewConfig::kCalibrated);
+    }
+    WriteColmapDatabase(database, out / "verified.db");
+    return out;
+  }();
+  return dir;
+}
+
+std::set<ViewPair> RemovedPairs(const fs::path& report_path) {
+  const nlohmann::json report = nlohmann::json::parse(std::ifstream(report_path));
+  std::set<ViewPair> removed;
+  for (const nlohmann::json& edge : report.at("removed_edges")) {
+    const IndexT a = edge.at("pair")[0].get<IndexT>();
+    const IndexT b = edge.at("pair")[1].get<IndexT>();
+    removed.insert({std::min(a, b), std::max(a, b)});
+  }
+  EXPECT_EQ(report.at("filter").at("removed_pairs").get<size_t>(), removed.size());
+  return removed;
+}
+
+// Pairs whose matches are mostly between twin copies (the synthetic truth).
+std::set<ViewPair> SpuriousPairs() {
+  const nlohmann::json scene =
+      nlohmann::json::parse(std::ifstream(OrbitProject() / "ground_truth" / "synthetic_scene.json"));
+  std::set<ViewPair> spurious;
+  for (const nlohmann::json& pair : scene.at("pairs")) {
+    if (pair.at("twin").get<int>() > pair.at("true").get<int>()) {
+      const IndexT a = pair.at("i").get<IndexT>();
+      const IndexT b = pair.at("j").get<IndexT>();
+      spurious.insert({std::min(a, b), std::max(a, b)});
+    }
+  }
+  return spurious;
+}
+
+std::string FileBytes(const fs::path& path) {
+  std::ifstream in(path, std::ios::binary);
+  return std::string(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>());
+}
+
+TEST(CliPruneEndToEnd, DatabaseLosesExactlyTheRemovedPairsAndRunsAreReproducible) {
+  const fs::path scratch = ScratchDir("cli_prune_database");
+  const fs::path input = OrbitProject() / "verified.db";
+  for (const char* name : {"a.db", "b.db"}) {
+    const CommandResult result = RunPrunesfm({"prune", "--database", input.string(), "--output",
+                                              (scratch / name).string(), "--seed", "5"});
+    ASSERT_EQ(result.exit_code, 0) << result.err;
+    EXPECT_NE(result.err.find("pruning: "), std::string::npos) << result.err;
+  }
+  const std::set<ViewPair> removed = RemovedPairs(scratch / "a.pruning_report.json");
+  EXPECT_EQ(removed, RemovedPairs(scratch / "b.pruning_report.json"));
+  EXPECT_EQ(FileBytes(scratch / "a.db"), FileBytes(scratch / "b.db"));
+
+  const ColmapDatabase before = ReadColmapDatabase(input);
+  const ColmapDatabase after = ReadColmapDatabase(scratch / "a.db");
+  ASSERT_FALSE(removed.empty());
+  EXPECT_EQ(after.verified.size(), before.verified.size() - removed.size());
+  for (const auto& [pair, geometry] : before.verified) {
+    const auto it = after.verified.find(pair);
+    if (removed.count(pair) != 0) {
+      EXPECT_EQ(it, after.verified.end()) << pair.first << "-" << pair.second;
+    } else {
+      ASSERT_NE(it, after.verified.end()) << pair.first << "-" << pair.second;
+      EXPECT_EQ(it->second.inliers.size(), geometry.inliers.size());
+    }
+  }
+  // The matches, features and images are copied as they are.
+  EXPECT_EQ(after.putative.size(), before.putative.size());
+  EXPECT_EQ(after.sfm_data.views.size(), before.sfm_data.views.size());
+  EXPECT_EQ(after.features.size(), before.features.size());
+
+  // Random removal would hit spurious pairs at their share of all pairs (about 0.3 here).
+  const std::set<ViewPair> spurious = SpuriousPairs();
+  size_t hits = 0;
+  for (const ViewPair& pair : removed) hits += spurious.count(pair);
+  const double spurious_share = static_cast<double>(spurious.size()) / static_cast<double>(before.verified.size());
+  EXPECT_GE(static_cast<double>(hits) / static_cast<double>(removed.size()), 0.5)
+      << hits << " of " << removed.size() << " removed pairs are spurious (share of all pairs " << spurious_share
+      << ")";
+}
+
+TEST(CliPruneEndToEnd, OpenMvgMatchFileLosesExactlyTheRemovedPairs) {
+  const fs::path scratch = ScratchDir("cli_prune_openmvg");
+  const fs::path output = scratch / "matches.pruned.txt";
+  const fs::path report = scratch / "report.json";
+  const CommandResult result = RunPrunesfm(
+      {"prune", "--sfm_data", (OrbitProject() / "sfm_data.json").string(), "--matches_dir",
+       (OrbitProject() / "matches").string(), "--output", output.string(), "--report", report.string()});
+  ASSERT_EQ(result.exit_code, 0) << result.err;
+  const std::set<ViewPair> removed = RemovedPairs(report);
+  const PairwiseMatches before = ReadOpenMvgMatches(OrbitProject() / "matches" / "matches.putative.bin");
+  const PairwiseMatches after = ReadOpenMvgMatches(output);
+  ASSERT_FALSE(removed.empty());
+  EXPECT_EQ(after.size(), before.size() - removed.size());
+  for (const auto& [pair, matches] : after) {
+    EXPECT_EQ(removed.count(pair), 0u);
+    EXPECT_EQ(matches.size(), before.at(pair).size());
+  }
+}
+
+}  // namespace
+}  // namespace sfm_pruning::testing
