@@ -10,6 +10,7 @@ namespace prunesfm {
 
 void AddConvertCommand(CLI::App& app);
 void AddEvaluateCommand(CLI::App& app);
+void AddExportCommand(CLI::App& app);
 void AddPruneCommand(CLI::App& app);
 void AddReconstructCommand(CLI::App& app);
 void AddRunCommand(CLI::App& app);

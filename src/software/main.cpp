@@ -27,6 +27,7 @@ int main(int argc, char** argv) {
   prunesfm::AddPruneCommand(app);
   prunesfm::AddConvertCommand(app);
   prunesfm::AddEvaluateCommand(app);
+  prunesfm::AddExportCommand(app);
   prunesfm::AddSynthCommand(app);
 
   try {

@@ -4,6 +4,7 @@
 
 #include "sfm_pruning/io/colmap_model.hpp"
 #include "sfm_pruning/io/ground_truth_cameras.hpp"
+#include "sfm_pruning/io/openmvs_conversion.hpp"
 #include "sfm_pruning/io/openmvg_sfm_data.hpp"
 #include "sfm_pruning/io/ply.hpp"
 #include "sfm_pruning/util/error.hpp"
@@ -21,6 +22,8 @@ std::string ModelFormatName(ModelFormat format) {
       return "gt_cameras.txt";
     case ModelFormat::kPly:
       return "PLY";
+    case ModelFormat::kOpenMvsScene:
+      return "OpenMVS scene";
   }
   return "unknown";
 }
@@ -37,8 +40,9 @@ ModelFormat DetectModelFormat(const fs::path& path) {
   if (extension == ".json" || extension == ".bin") return ModelFormat::kSfmData;
   if (extension == ".txt") return ModelFormat::kGroundTruthCameras;
   if (extension == ".ply") return ModelFormat::kPly;
+  if (extension == ".mvs") return ModelFormat::kOpenMvsScene;
   throw FileError(path.string(),
-                  "unknown model format (expected a COLMAP model folder, sfm_data.json/.bin, gt_cameras.txt or .ply)");
+                  "unknown model format (expected a COLMAP model folder, sfm_data.json/.bin, gt_cameras.txt, .ply or .mvs)");
 }
 
 ModelFormat OutputModelFormat(const fs::path& path) {
@@ -46,6 +50,7 @@ ModelFormat OutputModelFormat(const fs::path& path) {
   if (extension == ".json" || extension == ".bin") return ModelFormat::kSfmData;
   if (extension == ".ply") return ModelFormat::kPly;
   if (extension == ".txt") return ModelFormat::kGroundTruthCameras;
+  if (extension == ".mvs") return ModelFormat::kOpenMvsScene;
   return ModelFormat::kColmapModel;
 }
 
@@ -59,6 +64,11 @@ SfmData ReadModel(const fs::path& path) {
       return ReadGroundTruthCameras(path);
     case ModelFormat::kPly:
       return ReadPlyPoints(path);
+    case ModelFormat::kOpenMvsScene: {
+      SfmData data = SfmDataFromOpenMvsScene(ReadOpenMvsScene(path), path.string());
+      data.root_path = path.parent_path().string();
+      return data;
+    }
   }
   throw FileError(path.string(), "unknown model format");
 }
@@ -76,6 +86,9 @@ void WriteModel(const SfmData& data, const fs::path& path, const ModelWriteOptio
       return;
     case ModelFormat::kPly:
       WritePly(data, path);
+      return;
+    case ModelFormat::kOpenMvsScene:
+      WriteOpenMvsScene(OpenMvsSceneFromSfmData(data, data.root_path), path);
       return;
   }
 }

@@ -15,6 +15,7 @@ enum class ModelFormat {
   kSfmData,            // OpenMVG sfm_data: *.json or *.bin
   kGroundTruthCameras, // a benchmark gt_cameras.txt (any *.txt file)
   kPly,                // *.ply: points (and camera centres) only
+  kOpenMvsScene,       // *.mvs: OpenMVS scene (undistorted pinhole cameras only)
 };
 
 // Human-readable name for messages ("COLMAP model", "sfm_data", "gt_cameras.txt").
@@ -25,11 +26,12 @@ std::string ModelFormatName(ModelFormat format);
 //   file *.json or *.bin                            -> kSfmData
 //   file *.txt                                      -> kGroundTruthCameras
 //   file *.ply                                      -> kPly
+//   file *.mvs                                      -> kOpenMvsScene
 // Throws Error naming the path when it does not exist or matches none of these.
 ModelFormat DetectModelFormat(const std::filesystem::path& path);
 
 // The format an output path asks for: *.json / *.bin -> sfm_data, *.ply -> PLY, *.txt ->
-// gt_cameras.txt, anything else (no extension, an existing folder) -> a COLMAP model folder.
+// gt_cameras.txt, *.mvs -> OpenMVS scene, anything else (no extension, an existing folder) -> a COLMAP model folder.
 ModelFormat OutputModelFormat(const std::filesystem::path& path);
 
 // Reads the model with the reader of its detected format. Throws Error (one line naming the
@@ -41,7 +43,9 @@ struct ModelWriteOptions {
 };
 
 // Writes `data` in the format OutputModelFormat(path) selects, atomically. gt_cameras.txt needs
-// undistorted pinhole cameras; PLY keeps only points and camera centres.
+// undistorted pinhole cameras; PLY keeps only points and camera centres. An OpenMVS scene needs
+// undistorted pinhole cameras and names its images root_path/<image path> (openmvs_conversion.hpp);
+// reading one sets root_path to the scene's folder, against which OpenMVS resolves image names.
 void WriteModel(const SfmData& data, const std::filesystem::path& path, const ModelWriteOptions& options = {});
 
 }  // namespace sfm_pruning
