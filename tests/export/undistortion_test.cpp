@@ -8,7 +8,6 @@
 
 #include "export/rendered_scene.hpp"
 #include "sfm_pruning/export/undistortion.hpp"
-#include "sfm_pruning/util/error.hpp"
 
 namespace sfm_pruning {
 namespace {
@@ -152,14 +151,33 @@ TEST(Undistortion, ResampledImagesMatchARenderedPinholeView) {
   }
 }
 
-TEST(Undistortion, SphericalCamerasAreRefused) {
+TEST(Undistortion, SphericalCamerasBecomeSixCubeFaces) {
   const CameraIntrinsics spherical(CameraModel::kSpherical, 400, 200, {});
-  try {
-    UndistortedIntrinsics(spherical);
-    FAIL() << "no error";
-  } catch (const Error& e) {
-    EXPECT_NE(std::string(e.what()).find("spherical"), std::string::npos) << e.what();
+  const CameraIntrinsics face = UndistortedIntrinsics(spherical);
+  EXPECT_EQ(face, CameraIntrinsics(CameraModel::kPinholeFxFy, 100, 100, {50.0, 50.0, 49.5, 49.5}));
+  // 90 degrees across: the outer pixel edges look 45 degrees off axis.
+  EXPECT_NEAR(face.Unproject({-0.5, 49.5}).x(), -std::sqrt(0.5), 1e-12);
+  for (int k = 0; k < kNumCubeFaces; ++k) {
+    SCOPED_TRACE(CubeFaceNames()[k]);
+    const Eigen::Matrix3d& R = CubeFaceRotations()[k];
+    EXPECT_LT((R * R.transpose() - Eigen::Matrix3d::Identity()).norm(), 1e-15);
+    EXPECT_NEAR(R.determinant(), 1.0, 1e-15);
+    // The face's axis belongs to it, and a direction 44 degrees off its axis still does.
+    const Eigen::Vector3d axis = R.row(2).transpose();
+    EXPECT_EQ(CubeFaceOf(axis), k);
+    EXPECT_EQ(CubeFaceOf(axis + std::tan(DegToRad(44.0)) * R.row(0).transpose()), k);
+    // The spherical image and the face see the same colour along a ray of the face.
+    const Eigen::Vector3d ray = R.transpose() * Eigen::Vector3d(0.3, -0.2, 1.0);
+    const UndistortionMaps maps = ComputeUndistortionMaps(spherical, face, R);
+    const Eigen::Vector2d pixel = face.Project(R * ray);
+    const int u = static_cast<int>(std::lround(pixel.x())), v = static_cast<int>(std::lround(pixel.y()));
+    const Eigen::Vector2d expected = spherical.Project(R.transpose() * face.Unproject(Eigen::Vector2d(u, v)));
+    EXPECT_NEAR(maps.map_x.at<float>(v, u), expected.x(), 1e-3);
+    EXPECT_NEAR(maps.map_y.at<float>(v, u), expected.y(), 1e-3);
   }
+  // "up" looks along the camera's -y (y points down in the image).
+  EXPECT_EQ(CubeFaceNames()[CubeFaceOf(Eigen::Vector3d(0, -1, 0))], "up");
+  EXPECT_EQ(CubeFaceNames()[CubeFaceOf(Eigen::Vector3d(1, 0, 0))], "right");
 }
 
 }  // namespace

@@ -176,6 +176,81 @@ TEST(OpenMvsWorkspace, SceneNamesTheUndistortedImagesBesideIt) {
   }
 }
 
+// A spherical view becomes six cube faces: pinhole views with their own poses, the observations
+// in the face their ray falls in, images showing what a pinhole camera there would see.
+TEST(ColmapUndistortedWorkspace, SphericalViewsBecomeCubeFaces) {
+  const fs::path dir = testing::ScratchDir("colmap_workspace_spherical");
+  SfmData data;
+  data.root_path = (dir / "images").string();
+  data.intrinsics[4] = CameraIntrinsics(CameraModel::kSpherical, 256, 128, {});
+  View view;
+  view.id_view = 2;
+  view.id_pose = 3;
+  view.id_intrinsic = 4;
+  view.filename = "pano.png";
+  view.width = 256;
+  view.height = 128;
+  data.views[2] = view;
+  data.poses[3] = Pose(Eigen::AngleAxisd(0.4, Eigen::Vector3d(0.1, 1, 0.2).normalized()).toRotationMatrix(),
+                       Eigen::Vector3d(0.5, -0.2, 1.0));
+  // Points all around the camera: 26 directions of a cube's faces, edges and corners.
+  IndexT k = 0;
+  for (int x = -1; x <= 1; ++x) {
+    for (int y = -1; y <= 1; ++y) {
+      for (int z = -1; z <= 1; ++z) {
+        if (x == 0 && y == 0 && z == 0) continue;
+        Landmark landmark;
+        landmark.X = data.poses[3].ToWorld(3.0 * Eigen::Vector3d(x + 0.1, y - 0.05, z + 0.02).normalized());
+        landmark.observations[2] = {data.intrinsics[4].Project(data.poses[3].ToCamera(landmark.X)), k};
+        data.structure[k++] = landmark;
+      }
+    }
+  }
+  fs::create_directories(dir / "images");
+  cv::imwrite((dir / "images" / "pano.png").string(), testing::RenderView(data, 2));
+
+  const UndistortedModel undistorted = UndistortModel(data);
+  ASSERT_EQ(undistorted.data.views.size(), 6u);
+  EXPECT_EQ(undistorted.data.views.begin()->first, 3u);  // after the largest original view id
+  EXPECT_EQ(undistorted.data.views.at(3).filename, "pano_front.png");
+  EXPECT_EQ(undistorted.data.views.at(8).filename, "pano_down.png");
+  EXPECT_EQ(undistorted.data.poses.count(3), 0u);  // the panorama's pose is gone, faces have 4..9
+  EXPECT_EQ(undistorted.data.poses.size(), 6u);
+
+  WriteColmapUndistortedWorkspace(data, dir / "images", dir / "workspace");
+  const SfmData model = ReadColmapModel(dir / "workspace" / "sparse");
+  ASSERT_EQ(model.views.size(), 6u);
+  const CameraIntrinsics& face = model.intrinsics.begin()->second;
+  EXPECT_EQ(face.width(), 64u);
+  ASSERT_EQ(model.structure.size(), 26u);
+  size_t observations = 0;
+  for (const auto& [id, landmark] : model.structure) {
+    ASSERT_EQ(landmark.observations.size(), 1u);
+    for (const auto& [view_id, observation] : landmark.observations) {
+      ++observations;
+      const Eigen::Vector3d X_cam = model.PoseOf(model.views.at(view_id)).ToCamera(landmark.X);
+      EXPECT_GT(X_cam.z(), 0);
+      EXPECT_LT((face.Project(X_cam) - observation.x).norm(), 1e-6);
+      EXPECT_TRUE(observation.x.x() >= -0.5 && observation.x.x() <= 63.5 && observation.x.y() >= -0.5 &&
+                  observation.x.y() <= 63.5);
+    }
+  }
+  EXPECT_EQ(observations, 26u);
+  for (const auto& [view_id, face_view] : model.views) {
+    SCOPED_TRACE(face_view.filename);
+    const cv::Mat image = ReadColorImage(dir / "workspace" / "images" / face_view.filename);
+    ASSERT_EQ(image.cols, 64);
+    const cv::Mat expected = testing::RenderView(model, view_id);
+    double sum = 0;
+    for (int v = 0; v < 64; ++v) {
+      for (int u = 0; u < 64; ++u) {
+        for (int c = 0; c < 3; ++c) sum += std::abs(image.at<cv::Vec3b>(v, u)[c] - expected.at<cv::Vec3b>(v, u)[c]);
+      }
+    }
+    EXPECT_LT(sum / (64 * 64 * 3), 3.0);
+  }
+}
+
 // The shared OpenMVS sample stores its vertex colours blue first: projected into the original
 // Sceaux Castle image 100_7100.JPG (the sample's 00000.jpg), the stored bytes match the image
 // read as BGR much better than as RGB. The sample's K is that of OpenMVG's undistorted images and

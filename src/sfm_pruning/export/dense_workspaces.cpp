@@ -53,19 +53,19 @@ void WriteDenseScript(const fs::path& path) {
 
 void WriteColmapUndistortedWorkspace(const SfmData& data, const fs::path& image_root, const fs::path& output_dir,
                                      const DenseWorkspaceOptions& options, const ProgressCallback& progress) {
-  const SfmData undistorted = UndistortModel(data, options.undistort);
+  const UndistortedModel undistorted = UndistortModel(data, options.undistort);
   WriteDirectoryAtomically(output_dir, [&](const fs::path& dir) {
     WriteUndistortedImages(data, undistorted, image_root, dir / "images", options.images, progress);
-    WriteColmapModel(undistorted, dir / "sparse", ColmapModelFormat::kBinary);
-    WriteStereoFolder(undistorted, dir / "stereo");
+    WriteColmapModel(undistorted.data, dir / "sparse", ColmapModelFormat::kBinary);
+    WriteStereoFolder(undistorted.data, dir / "stereo");
     WriteDenseScript(dir / "run-colmap-geometric.sh");
   });
 }
 
 void WriteOpenMvsWorkspace(const SfmData& data, const fs::path& image_root, const fs::path& output_dir,
                            const DenseWorkspaceOptions& options, const ProgressCallback& progress) {
-  const SfmData undistorted = UndistortModel(data, options.undistort);
-  const OpenMvsScene scene = OpenMvsSceneFromSfmData(undistorted, "images", options.openmvs_version);
+  const UndistortedModel undistorted = UndistortModel(data, options.undistort);
+  const OpenMvsScene scene = OpenMvsSceneFromSfmData(undistorted.data, "images", options.openmvs_version);
   WriteDirectoryAtomically(output_dir, [&](const fs::path& dir) {
     WriteUndistortedImages(data, undistorted, image_root, dir / "images", options.images, progress);
     WriteOpenMvsScene(scene, dir / "scene.mvs");

@@ -2,6 +2,7 @@
 #pragma once
 
 #include <filesystem>
+#include <map>
 
 #include "sfm_pruning/export/undistortion.hpp"
 #include "sfm_pruning/sfm/sfm_data.hpp"
@@ -9,22 +10,37 @@
 
 namespace sfm_pruning {
 
-// Every intrinsic replaced by UndistortedIntrinsics and every observation moved to where the
-// undistorted image shows it; views, poses, 3D points, colours and ids unchanged. Throws Error for
-// a spherical camera.
-SfmData UndistortModel(const SfmData& data, const UndistortOptions& options = {});
+// Where the image of an undistorted view comes from: a view of the original model, seen through
+// `rotation` (original camera frame -> this view's frame; identity but for cube faces).
+struct UndistortedViewSource {
+  IndexT view = kUndefinedIndex;
+  int cube_face = -1;  // 0..5 for the faces of a spherical view
+  Eigen::Matrix3d rotation = Eigen::Matrix3d::Identity();
+};
+
+struct UndistortedModel {
+  SfmData data;
+  std::map<IndexT, UndistortedViewSource> sources;  // one per view of `data`
+};
+
+// The model through pinhole cameras (UndistortedIntrinsics): every observation moved to where the
+// undistorted image shows it; ids, poses, 3D points and colours unchanged. A posed spherical view
+// becomes six cube-face views (new view and pose ids after the largest existing ones, in view and
+// face order; images "<name>_<face>.<ext>", each observation in the face its ray falls in); an
+// unposed spherical view is dropped.
+UndistortedModel UndistortModel(const SfmData& data, const UndistortOptions& options = {});
 
 struct ImageWriteOptions {
   int num_threads = 1;
   int jpeg_quality = 95;  // for outputs named *.jpg / *.jpeg
 };
 
-// Writes the undistorted image of every posed view to output_dir / view.RelativeImagePath(),
-// reading the original from image_root / the same path; the file type follows the name. Views
-// whose camera has no distortion (undistorted camera = original) are copied byte for byte.
-// Images are processed in parallel with progress "undistorting images". Throws Error naming the
-// image when it is missing, does not decode, or its size differs from its camera's.
-void WriteUndistortedImages(const SfmData& original, const SfmData& undistorted,
+// Writes the image of every posed view of `undistorted` to output_dir / its relative path, resampled
+// from its source image (image_root / the original view's path); the file type follows the name.
+// Views whose camera equals the original's are copied byte for byte. Images are processed in
+// parallel with progress "undistorting images". Throws Error naming the image when it is missing,
+// does not decode, or its size differs from its camera's.
+void WriteUndistortedImages(const SfmData& original, const UndistortedModel& undistorted,
                             const std::filesystem::path& image_root, const std::filesystem::path& output_dir,
                             const ImageWriteOptions& options = {}, const ProgressCallback& progress = {});
 

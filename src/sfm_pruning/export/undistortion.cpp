@@ -5,6 +5,7 @@
 #include <limits>
 #include <vector>
 
+#include <Eigen/Geometry>
 #include <opencv2/imgproc.hpp>
 
 #include "sfm_pruning/util/error.hpp"
@@ -68,10 +69,40 @@ BorderExtent MeasureBorder(const CameraIntrinsics& camera) {
 
 }  // namespace
 
+const std::array<Eigen::Matrix3d, kNumCubeFaces>& CubeFaceRotations() {
+  // Rows: the face's x (right), y (down) and z (forward) axes in the spherical camera's frame.
+  static const std::array<Eigen::Matrix3d, kNumCubeFaces> rotations = [] {
+    const auto face = [](const Eigen::Vector3d& x, const Eigen::Vector3d& y) {
+      Eigen::Matrix3d R;
+      R << x.transpose(), y.transpose(), x.cross(y).transpose();
+      return R;
+    };
+    const Eigen::Vector3d X = Eigen::Vector3d::UnitX(), Y = Eigen::Vector3d::UnitY(), Z = Eigen::Vector3d::UnitZ();
+    return std::array<Eigen::Matrix3d, kNumCubeFaces>{face(X, Y), face(-Z, Y), face(-X, Y), face(Z, Y), face(X, Z),
+                                                      face(X, -Z)};
+  }();
+  return rotations;
+}
+
+const std::array<std::string, kNumCubeFaces>& CubeFaceNames() {
+  static const std::array<std::string, kNumCubeFaces> names = {"front", "right", "back", "left", "up", "down"};
+  return names;
+}
+
+int CubeFaceOf(const Eigen::Vector3d& bearing) {
+  int best = 0;
+  for (int face = 1; face < kNumCubeFaces; ++face) {
+    if (CubeFaceRotations()[face].row(2).dot(bearing) > CubeFaceRotations()[best].row(2).dot(bearing)) best = face;
+  }
+  return best;
+}
+
 CameraIntrinsics UndistortedIntrinsics(const CameraIntrinsics& camera, const UndistortOptions& options) {
-  if (!IsPinholeFamily(camera.model())) {
-    throw Error("cannot undistort a " + CameraModelName(camera.model()) +
-                " camera to a pinhole camera (a panorama has no single pinhole view)");
+  if (camera.model() == CameraModel::kSpherical) {
+    // 90 degrees over `size` pixels: the face spans [-0.5, size - 0.5], tan(45) = 1 at its edges.
+    const uint32_t size = std::max<uint32_t>(1, (std::max(camera.width(), camera.height()) + 2) / 4);
+    const double focal = size / 2.0, centre = (size - 1.0) / 2.0;
+    return CameraIntrinsics(CameraModel::kPinholeFxFy, size, size, {focal, focal, centre, centre});
   }
   const Eigen::Vector2d pp = camera.PrincipalPoint();
   if (!camera.HasDistortion()) {
@@ -123,20 +154,24 @@ Eigen::Vector2d UndistortedPixel(const CameraIntrinsics& original, const CameraI
   return undistorted.NormalizedToPixel(original.PixelToNormalized(distorted_pixel));
 }
 
-UndistortionMaps ComputeUndistortionMaps(const CameraIntrinsics& original, const CameraIntrinsics& undistorted) {
+UndistortionMaps ComputeUndistortionMaps(const CameraIntrinsics& original, const CameraIntrinsics& undistorted,
+                                         const Eigen::Matrix3d& rotation) {
   const int width = static_cast<int>(undistorted.width());
   const int height = static_cast<int>(undistorted.height());
   UndistortionMaps maps{cv::Mat(height, width, CV_32FC1), cv::Mat(height, width, CV_32FC1)};
   // The undistorted camera has no distortion, so its pixel -> normalized step is linear.
   const double fx = undistorted.FocalX(), fy = undistorted.FocalY();
   const Eigen::Vector2d pp = undistorted.PrincipalPoint();
+  const bool rotated = !rotation.isIdentity();
+  const Eigen::Matrix3d to_original = rotation.transpose();
   cv::parallel_for_(cv::Range(0, height), [&](const cv::Range& rows) {
     for (int v = rows.start; v < rows.end; ++v) {
       float* row_x = maps.map_x.ptr<float>(v);
       float* row_y = maps.map_y.ptr<float>(v);
       const double y = (v - pp.y()) / fy;
       for (int u = 0; u < width; ++u) {
-        const Eigen::Vector2d source = original.NormalizedToPixel({(u - pp.x()) / fx, y});
+        const Eigen::Vector3d ray((u - pp.x()) / fx, y, 1.0);
+        const Eigen::Vector2d source = rotated ? original.Project(to_original * ray) : original.Project(ray);
         row_x[u] = static_cast<float>(source.x());
         row_y[u] = static_cast<float>(source.y());
       }

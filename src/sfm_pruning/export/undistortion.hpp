@@ -12,9 +12,15 @@
 // [min_focal_scale, max_focal_scale]: wide fisheye lenses have no finite pinhole view keeping all
 // pixels, and a border sample whose undistortion does not converge is ignored.
 //
-// Spherical cameras have no single pinhole view and are refused.
+// A spherical (equirectangular) camera has no single pinhole view: it becomes six cube faces,
+// square pinhole views of 90 degrees looking along +z, +x, -z, -x, -y (up) and +y (down) of the
+// camera, of max(width, height) / 4 pixels (the panorama's resolution at the face centres).
 #pragma once
 
+#include <array>
+#include <string>
+
+#include <Eigen/Core>
 #include <opencv2/core.hpp>
 
 #include "sfm_pruning/sfm/camera_intrinsics.hpp"
@@ -30,9 +36,17 @@ struct UndistortOptions {
 };
 
 // The pinhole camera (kPinholeFxFy, COLMAP's PINHOLE) that undistorted images of `camera` use.
-// A camera without distortion maps to itself (same focal lengths and principal point). Throws
-// Error for kSpherical.
+// A camera without distortion maps to itself (same focal lengths and principal point); a
+// spherical camera maps to its cube face camera.
 CameraIntrinsics UndistortedIntrinsics(const CameraIntrinsics& camera, const UndistortOptions& options = {});
+
+// The cube faces of a spherical camera: the rotation from the spherical camera's frame to each
+// face's frame (x right, y down, z forward), and the names given to the face images.
+inline constexpr int kNumCubeFaces = 6;
+const std::array<Eigen::Matrix3d, kNumCubeFaces>& CubeFaceRotations();
+const std::array<std::string, kNumCubeFaces>& CubeFaceNames();  // "front", "right", ...
+// The face whose view contains the camera-frame direction `bearing` (its largest component).
+int CubeFaceOf(const Eigen::Vector3d& bearing);
 
 // True when the two cameras project every ray to the same pixel (the image can be copied as is).
 bool SameProjection(const CameraIntrinsics& a, const CameraIntrinsics& b);
@@ -45,12 +59,14 @@ Eigen::Vector2d UndistortedPixel(const CameraIntrinsics& original, const CameraI
                                  const Eigen::Vector2d& distorted_pixel);
 
 // Lookup maps for cv::remap: for every pixel of the undistorted image (undistorted.width() x
-// height()), the float position of its source in the original image.
+// height()), the float position of its source in the original image. `rotation` turns the
+// original camera's frame into the undistorted camera's (a cube face's; identity otherwise).
 struct UndistortionMaps {
   cv::Mat map_x;  // CV_32FC1
   cv::Mat map_y;  // CV_32FC1
 };
-UndistortionMaps ComputeUndistortionMaps(const CameraIntrinsics& original, const CameraIntrinsics& undistorted);
+UndistortionMaps ComputeUndistortionMaps(const CameraIntrinsics& original, const CameraIntrinsics& undistorted,
+                                         const Eigen::Matrix3d& rotation = Eigen::Matrix3d::Identity());
 
 // Resamples `image` (any depth and channel count OpenCV's remap takes) bilinearly; pixels whose
 // source lies outside the image are black.
