@@ -209,6 +209,18 @@ TEST(ColmapUndistortedWorkspace, SphericalViewsBecomeCubeFaces) {
   fs::create_directories(dir / "images");
   cv::imwrite((dir / "images" / "pano.png").string(), testing::RenderView(data, 2));
 
+  // An unposed panorama seeing the first point is dropped with its observation.
+  SfmData with_unposed = data;
+  View unposed = view;
+  unposed.id_view = 0;
+  unposed.id_pose = kUndefinedIndex;
+  with_unposed.views[0] = unposed;
+  with_unposed.structure[0].observations[0] = {Eigen::Vector2d(10, 10), 0};
+  const UndistortedModel dropped = UndistortModel(with_unposed);
+  EXPECT_EQ(dropped.data.views.count(0), 0u);
+  EXPECT_EQ(dropped.data.structure.at(0).observations.size(), 1u);
+  ValidateSfmData(dropped.data, "undistorted");
+
   const UndistortedModel undistorted = UndistortModel(data);
   ASSERT_EQ(undistorted.data.views.size(), 6u);
   EXPECT_EQ(undistorted.data.views.begin()->first, 3u);  // after the largest original view id

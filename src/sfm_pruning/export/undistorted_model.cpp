@@ -37,7 +37,10 @@ void SplitSphericalViews(const SfmData& original, UndistortedModel* model) {
     }
     data.views.erase(view_id);
     model->sources.erase(view_id);
-    if (!original.IsPosed(view)) continue;
+    if (!original.IsPosed(view)) {
+      for (auto& [landmark_id, landmark] : data.structure) landmark.observations.erase(view_id);
+      continue;
+    }
     const Pose& pose = original.PoseOf(view);
     std::array<IndexT, kNumCubeFaces> face_views;
     for (int face = 0; face < kNumCubeFaces; ++face) {

@@ -27,7 +27,7 @@ struct UndistortedModel {
 // undistorted image shows it; ids, poses, 3D points and colours unchanged. A posed spherical view
 // becomes six cube-face views (new view and pose ids after the largest existing ones, in view and
 // face order; images "<name>_<face>.<ext>", each observation in the face its ray falls in); an
-// unposed spherical view is dropped.
+// unposed spherical view is dropped with its observations.
 UndistortedModel UndistortModel(const SfmData& data, const UndistortOptions& options = {});
 
 struct ImageWriteOptions {
