@@ -575,7 +575,16 @@ def write_markdown(path, meta, rows, scenes):
     if meta.get("prunesfm_run") and "prunesfm_run_intrinsics_options" in meta:
         options = meta["prunesfm_run_intrinsics_options"]
         if options:
-            L.append(f"`prunesfm run` intrinsics options in this build: {', '.join(f'`{o}`' for o in options)}.")
+            L.append(f"`prunesfm run` intrinsics options in this build: {', '.join(f'`{o}`' for o in options)}. "
+                     "By default (`--refine_intrinsics GUESSED`) a camera whose focal COLMAP only guessed "
+                     "(`prior_focal_length` = 0: these images have no EXIF, so every dataset's camera) gets its "
+                     "focal calibrated from the fundamental matrices of the verified pairs (kept only when the "
+                     "pairs determine it), then focal, k1 and principal point refined in bundle adjustment; when "
+                     "that moves the focal by more than 5 % the pairs are verified and solved again with the refined "
+                     "intrinsics (`first pass` in the breakdown). So the GLOBAL rows **refine the principal point**; "
+                     "a `GLOBAL-PP` row, where present, is the same with `--refine_principal_point 0`, a `+K` row "
+                     "the engine started from the dataset's known K (`--known_k`: \"start from K.txt\", "
+                     "`../shared/datasets/README.md`); COLMAP never gets K and does not refine the principal point.")
         else:
             L.append("`prunesfm run --help` offers no option to refine the focal length or the principal point in "
                      "this build: our engines hold COLMAP's prior camera as given (focal 1.2·max(w, h) when no EXIF, "

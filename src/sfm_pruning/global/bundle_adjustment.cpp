@@ -98,6 +98,10 @@ void SetIntrinsicsManifolds(const BundleAdjustmentOptions& options, const SfmDat
   for (const auto& [id, offset] : parameters->intrinsic_offsets()) {
     const CameraIntrinsics& intrinsics = data.intrinsics.at(id);
     if (!IsPinholeFamily(intrinsics.model())) continue;  // no parameters, no block
+    if (options.constant_intrinsics.count(id) > 0) {
+      problem->SetParameterBlockConstant(parameters->intrinsics(id));
+      continue;
+    }
     const std::vector<int> constant = ConstantIntrinsicParams(intrinsics.model(), options);
     const int num_params = static_cast<int>(intrinsics.params().size());
     if (static_cast<int>(constant.size()) == num_params) {

@@ -16,6 +16,7 @@
 #pragma once
 
 #include <cstddef>
+#include <set>
 #include <string>
 
 #include "sfm_pruning/sfm/sfm_data.hpp"
@@ -32,6 +33,8 @@ struct BundleAdjustmentOptions {
   bool refine_focal = false;            // f, or fx and fy
   bool refine_principal_point = false;  // cx, cy (Strecha needs it: ~16 px off centre)
   bool refine_distortion = false;       // k1.. / t1, t2 of models that have them
+  // Intrinsic ids held constant whatever the flags above (e.g. cameras with a trusted focal).
+  std::set<IndexT> constant_intrinsics;
 
   // Gauge, see above. fix_scale is only used together with fix_first_pose.
   bool fix_first_pose = true;

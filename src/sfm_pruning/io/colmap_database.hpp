@@ -50,6 +50,9 @@ struct ColmapTwoViewGeometry {
 
 struct ColmapDatabase {
   SfmData sfm_data;  // views and intrinsics only; root_path empty, no poses
+  // Cameras whose focal COLMAP guessed (cameras.prior_focal_length = 0: no EXIF, 1.2 * max(w, h));
+  // the others' focal is trusted.
+  std::set<IndexT> intrinsics_with_guessed_focal;
   FeaturesPerView features;
   PairwiseMatches putative;  // pairs of the matches table with at least one match
   // Pairs of two_view_geometries with at least one inlier; COLMAP's empty rows (pairs whose
@@ -67,7 +70,7 @@ ViewPair ColmapPairFromId(uint64_t pair_id);
 ColmapDatabase ReadColmapDatabase(const std::filesystem::path& path);
 
 // Writes a new database in COLMAP 3.8's schema, atomically (an existing file is replaced):
-// cameras (prior_focal_length = 1: the focal is known), images (named RelativeImagePath()),
+// cameras (prior_focal_length = 0 for intrinsics_with_guessed_focal, 1 otherwise), images (named RelativeImagePath()),
 // keypoints (4 columns: x y scale orientation), descriptors (views that have them), matches and
 // two_view_geometries. Every view needs an intrinsic; ids must be below 2147483647.
 void WriteColmapDatabase(const ColmapDatabase& database, const std::filesystem::path& path);

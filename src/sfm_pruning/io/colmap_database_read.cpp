@@ -22,8 +22,11 @@ namespace {
 constexpr uint64_t kMaxNumImages = 2147483647;  // COLMAP's pair id multiplier
 
 void ReadCameras(Connection& db, ColmapDatabase* out) {
-  Statement rows =
-      db.Prepare("SELECT camera_id, model, width, height, params FROM cameras ORDER BY camera_id");
+  // prior_focal_length = 0: COLMAP guessed the focal (no EXIF); a database without the column
+  // (not written by COLMAP) has known intrinsics.
+  const bool has_prior_flag = db.HasColumn("cameras", "prior_focal_length");
+  Statement rows = db.Prepare(std::string("SELECT camera_id, model, width, height, params") +
+                              (has_prior_flag ? ", prior_focal_length" : "") + " FROM cameras ORDER BY camera_id");
   while (rows.Step()) {
     const auto camera_id = static_cast<IndexT>(rows.ColumnInt64(0));
     ColmapCamera camera;
@@ -38,6 +41,7 @@ void ReadCameras(Connection& db, ColmapDatabase* out) {
                                           "camera " + std::to_string(camera_id) + " params");
     }
     out->sfm_data.intrinsics[camera_id] = FromColmapCamera(camera, db.source());
+    if (has_prior_flag && rows.ColumnInt64(5) == 0) out->intrinsics_with_guessed_focal.insert(camera_id);
   }
 }
 

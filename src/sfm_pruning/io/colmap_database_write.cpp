@@ -45,10 +45,11 @@ void BindBlob(Statement& statement, int index, const std::string& bytes) {
   statement.BindBlob(index, bytes.data(), bytes.size());
 }
 
-void WriteCamerasAndImages(const SfmData& data, const std::string& source, Connection& db) {
+void WriteCamerasAndImages(const SfmData& data, const std::set<IndexT>& guessed_focal, const std::string& source,
+                           Connection& db) {
   Statement camera_row = db.Prepare(
       "INSERT INTO cameras (camera_id, model, width, height, params, prior_focal_length) VALUES (?, ?, ?, ?, "
-      "?, 1)");
+      "?, ?)");
   for (const auto& [intrinsic_id, intrinsics] : data.intrinsics) {
     ColmapCamera camera;
     try {
@@ -61,6 +62,7 @@ void WriteCamerasAndImages(const SfmData& data, const std::string& source, Conne
     camera_row.BindInt64(3, static_cast<int64_t>(camera.width));
     camera_row.BindInt64(4, static_cast<int64_t>(camera.height));
     BindBlob(camera_row, 5, EncodeArray(camera.params));
+    camera_row.BindInt64(6, guessed_focal.count(intrinsic_id) > 0 ? 0 : 1);
     camera_row.Run();
   }
   Statement image_row = db.Prepare("INSERT INTO images (image_id, name, camera_id) VALUES (?, ?, ?)");
@@ -179,7 +181,7 @@ void WriteColmapDatabase(const ColmapDatabase& database, const fs::path& path) {
        start = end + 1, end = schema.find(';', start)) {
     db.Execute(schema.substr(start, end - start));
   }
-  WriteCamerasAndImages(database.sfm_data, source, db);
+  WriteCamerasAndImages(database.sfm_data, database.intrinsics_with_guessed_focal, source, db);
   WriteFeatures(database, source, db);
   WriteMatches(database, source, db);
   db.Execute("COMMIT");

@@ -29,6 +29,7 @@ ReconstructionInput ReadColmapInput(const std::filesystem::path& database) {
   ReconstructionInput input;
   input.source = database.string();
   input.scene = std::move(colmap.sfm_data);
+  input.guessed_focal = std::move(colmap.intrinsics_with_guessed_focal);
   input.features = std::move(colmap.features);
   input.putative = std::move(colmap.putative);
   for (auto& [pair, geometry] : colmap.verified) {

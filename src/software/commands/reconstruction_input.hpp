@@ -4,6 +4,7 @@
 #pragma once
 
 #include <filesystem>
+#include <set>
 #include <string>
 
 #include "sfm_pruning/global/verified_pairs.hpp"
@@ -20,6 +21,9 @@ struct ReconstructionInput {
   sfm_pruning::FeaturesPerView features;
   sfm_pruning::PairwiseMatches putative;  // to verify (used when `verified` is empty)
   sfm_pruning::VerifiedPairs verified;    // COLMAP two_view_geometries
+  // Intrinsics whose focal is a guess (COLMAP's prior_focal_length = 0); OpenMVG intrinsics are
+  // trusted.
+  std::set<sfm_pruning::IndexT> guessed_focal;
 };
 
 // sfm_data.json (views + intrinsics), the .feat files of `matches_dir` and the match file chosen

@@ -3,6 +3,7 @@
 #include <CLI/CLI.hpp>
 
 #include <chrono>
+#include <set>
 #include <cstdio>
 #include <filesystem>
 #include <optional>
@@ -10,6 +11,7 @@
 #include <glog/logging.h>
 #include <nlohmann/json.hpp>
 
+#include "sfm_pruning/global/focal_calibration.hpp"
 #include "sfm_pruning/global/global_engine.hpp"
 #include "sfm_pruning/io/colmap_model.hpp"
 #include "sfm_pruning/io/openmvg_sfm_data.hpp"
@@ -36,7 +38,9 @@ std::string PairName(const sfm_pruning::ViewPair& pair) {
 }  // namespace
 
 sfm_pruning::ViewGraph BuildVerifiedViewGraph(const EngineSettings& settings, const ReconstructionInput& input,
-                                              sfm_pruning::ViewGraphBuildReport* report) {
+                                              sfm_pruning::ViewGraphBuildReport* report,
+                                              const sfm_pruning::SfmData* scene) {
+  const sfm_pruning::SfmData& views_and_intrinsics = scene != nullptr ? *scene : input.scene;
   if (input.verified.empty() && input.putative.empty()) {
     throw Error(input.source + ": no edges: no two-view geometries and no matches");
   }
@@ -46,10 +50,10 @@ sfm_pruning::ViewGraph BuildVerifiedViewGraph(const EngineSettings& settings, co
   sfm_pruning::ViewGraph graph;
   try {
     graph = input.verified.empty()
-                ? BuildViewGraphFromMatches(options, input.scene, input.features, input.putative, report,
+                ? BuildViewGraphFromMatches(options, views_and_intrinsics, input.features, input.putative, report,
                                             TerminalProgressBar())
-                : BuildViewGraphFromVerifiedPairs(options, input.scene, input.features, input.verified, report,
-                                                  TerminalProgressBar());
+                : BuildViewGraphFromVerifiedPairs(options, views_and_intrinsics, input.features, input.verified,
+                                                  report, TerminalProgressBar());
   } catch (const Error& e) {
     throw Error(input.source + ": " + e.what());
   }
@@ -66,6 +70,34 @@ sfm_pruning::ViewGraph BuildVerifiedViewGraph(const EngineSettings& settings, co
 }
 
 namespace {
+
+// View-graph focal calibration of the refined cameras, into *scene. Verified pairs give their
+// inliers directly; putative matches are verified once with the prior intrinsics first (the
+// caller verifies them again with the calibrated ones).
+sfm_pruning::FocalCalibrationReport CalibrateFocals(const EngineSettings& settings, const ReconstructionInput& input,
+                                                    const std::set<sfm_pruning::IndexT>& refined,
+                                                    sfm_pruning::SfmData* scene) {
+  const sfm_pruning::FocalCalibrationOptions options;
+  if (!input.verified.empty()) {
+    return CalibrateFocalLengths(options, refined, sfm_pruning::InliersOfPairs(input.verified), input.features, scene);
+  }
+  sfm_pruning::ViewGraphBuildReport prior_build;
+  const sfm_pruning::ViewGraph prior_graph = BuildVerifiedViewGraph(settings, input, &prior_build, scene);
+  return CalibrateFocalLengths(options, refined, sfm_pruning::InliersOfEdges(prior_graph), input.features, scene);
+}
+
+// Verification with the intrinsics of `scene`, then the engine; a failed engine is reported in
+// report.success.
+struct Solution {
+  sfm_pruning::ViewGraphBuildReport build;
+  double verify_seconds = 0.0;
+  sfm_pruning::GlobalEngineReport report;
+  sfm_pruning::SfmData model;
+  std::optional<sfm_pruning::ViewGraphPruningReport> pruning;
+};
+
+Solution Solve(const EngineSettings& settings, const ReconstructionInput& input, const sfm_pruning::SfmData& scene,
+               const std::set<sfm_pruning::IndexT>& refined);
 
 nlohmann::json TimingsJson(const EngineSettings& settings, const sfm_pruning::ViewGraphBuildReport& build,
                            const sfm_pruning::GlobalEngineReport& engine, const sfm_pruning::SfmData& model,
@@ -143,6 +175,7 @@ void AddEngineOptions(CLI::App* cmd, EngineSettings* settings) {
       ->check(CLI::IsMember({"GLOBAL", "GLOBAL_PRUNED"}))
       ->capture_default_str();
   AddSolverOptions(cmd, settings);
+  AddIntrinsicsOptions(cmd, &settings->intrinsics);
   AddPruningOptions(cmd, &settings->pruning);
 }
 
@@ -168,32 +201,66 @@ void AddSolverOptions(CLI::App* cmd, EngineSettings* settings) {
       ->capture_default_str();
 }
 
-void RunReconstruction(const EngineSettings& settings, const ReconstructionInput& input, const fs::path& output,
-                       double read_seconds) {
-  SilenceSolverLogging();
-  const auto verify_start = std::chrono::steady_clock::now();
-  sfm_pruning::ViewGraphBuildReport build;
-  const sfm_pruning::ViewGraph graph = BuildVerifiedViewGraph(settings, input, &build);
-  const double verify_seconds = SecondsSince(verify_start);
-  Info("view graph: " + std::to_string(graph.NumValidEdges()) + " edges of " + std::to_string(build.num_pairs) +
-       " pairs, " + std::to_string(graph.NumNodes()) + " views");
+namespace {
 
-  sfm_pruning::SfmData model;
-  sfm_pruning::GlobalEngineReport report;
-  std::optional<sfm_pruning::ViewGraphPruningReport> pruning;
+Solution Solve(const EngineSettings& settings, const ReconstructionInput& input, const sfm_pruning::SfmData& scene,
+               const std::set<sfm_pruning::IndexT>& refined) {
+  Solution solution;
+  const auto verify_start = std::chrono::steady_clock::now();
+  const sfm_pruning::ViewGraph graph = BuildVerifiedViewGraph(settings, input, &solution.build, &scene);
+  solution.verify_seconds = SecondsSince(verify_start);
+  Info("view graph: " + std::to_string(graph.NumValidEdges()) + " edges of " +
+       std::to_string(solution.build.num_pairs) + " pairs, " + std::to_string(graph.NumNodes()) + " views");
+  const sfm_pruning::BundleAdjustmentOptions bundle = RefiningBundleOptions(settings.intrinsics, scene, refined);
   if (settings.engine == "GLOBAL_PRUNED") {
-    const sfm_pruning::PrunedGlobalEngineOptions options = PrunedEngineOptions(settings);
+    sfm_pruning::PrunedGlobalEngineOptions options = PrunedEngineOptions(settings);
+    options.engine.bundle = bundle;  // the final solve; the per-community solves hold the intrinsics
     sfm_pruning::PrunedGlobalEngineReport pruned;
-    RunPrunedGlobalEngine(options, graph, input.scene, input.features, &model, &pruned, TerminalProgressBar());
-    report = std::move(pruned.engine);
-    pruning = std::move(pruned.pruning);
+    RunPrunedGlobalEngine(options, graph, scene, input.features, &solution.model, &pruned, TerminalProgressBar());
+    solution.report = std::move(pruned.engine);
+    solution.pruning = std::move(pruned.pruning);
   } else {
     sfm_pruning::GlobalEngineOptions options;
     options.seed = settings.seed;
     options.num_threads = settings.num_threads;
     options.positioning = Positioning(settings);
-    RunGlobalEngine(options, graph, input.scene, input.features, &model, &report, TerminalProgressBar());
+    options.bundle = bundle;
+    RunGlobalEngine(options, graph, scene, input.features, &solution.model, &solution.report, TerminalProgressBar());
   }
+  return solution;
+}
+
+}  // namespace
+
+void RunReconstruction(const EngineSettings& settings, const ReconstructionInput& input, const fs::path& output,
+                       double read_seconds) {
+  SilenceSolverLogging();
+  const std::set<sfm_pruning::IndexT> refined = RefinedIntrinsics(settings.intrinsics, input);
+  sfm_pruning::SfmData scene = input.scene;
+  std::optional<sfm_pruning::FocalCalibrationReport> calibration;
+  const auto calibration_start = std::chrono::steady_clock::now();
+  if (settings.intrinsics.focal && !refined.empty()) {
+    calibration = CalibrateFocals(settings, input, refined, &scene);
+    ReportCalibration(*calibration);
+  }
+  const double calibration_seconds = SecondsSince(calibration_start);
+
+  Solution solution = Solve(settings, input, scene, refined);
+  double first_pass_seconds = 0.0;
+  const std::string moved = MovedFocals(scene, solution.model, refined, settings.intrinsics.refocus_threshold);
+  if (solution.report.success && settings.intrinsics.focal && !moved.empty()) {
+    // The relative poses were estimated with a focal that bundle adjustment found wrong: verify
+    // again with the refined intrinsics and solve again, once.
+    Info("bundle adjustment moved the focal (" + moved + "): verifying and solving again with the refined intrinsics");
+    first_pass_seconds = solution.verify_seconds + solution.report.total_seconds;
+    for (const sfm_pruning::IndexT id : refined) scene.intrinsics.at(id) = solution.model.intrinsics.at(id);
+    solution = Solve(settings, input, scene, refined);
+  }
+  const sfm_pruning::ViewGraphBuildReport& build = solution.build;
+  const sfm_pruning::GlobalEngineReport& report = solution.report;
+  const sfm_pruning::SfmData& model = solution.model;
+  const std::optional<sfm_pruning::ViewGraphPruningReport>& pruning = solution.pruning;
+  const double verify_seconds = solution.verify_seconds;
   if (!report.success) throw Error(input.source + ": reconstruction failed: " + report.message);
   if (pruning) {
     fs::create_directories(output);
@@ -201,8 +268,21 @@ void RunReconstruction(const EngineSettings& settings, const ReconstructionInput
     Info("pruning: " + PruningSummary(*pruning) + "; wrote pruning_report.json");
   }
 
-  const nlohmann::json timings =
+  nlohmann::json timings =
       TimingsJson(settings, build, report, model, read_seconds, verify_seconds, pruning ? &*pruning : nullptr);
+  auto& stage_list = timings.at("stages");
+  if (first_pass_seconds > 0.0) {
+    stage_list.insert(stage_list.begin() + 1, nlohmann::json{{"stage", "first pass"}, {"seconds", first_pass_seconds}});
+  }
+  if (calibration) {
+    stage_list.insert(stage_list.begin() + 1,
+                      nlohmann::json{{"stage", "focal calibration"}, {"seconds", calibration_seconds}});
+    timings["focal_calibration"] = CalibrationJson(*calibration);
+  }
+  timings["refined_intrinsics"] = {{"intrinsic_ids", refined},
+                                   {"focal", settings.intrinsics.focal},
+                                   {"distortion", settings.intrinsics.distortion},
+                                   {"principal_point", settings.intrinsics.principal_point}};
   for (const auto& dropped : timings.at("dropped_views")) {
     Info("dropped view " + dropped.at("view_id").dump() + " (" + dropped.at("image").get<std::string>() +
          "): " + dropped.at("reason").get<std::string>());

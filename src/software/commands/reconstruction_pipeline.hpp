@@ -9,6 +9,7 @@
 
 #include "sfm_pruning/global/view_graph_builder.hpp"
 #include "sfm_pruning/pruning/view_graph_pruning.hpp"
+#include "software/commands/intrinsics_options.hpp"
 #include "software/commands/reconstruction_input.hpp"
 
 namespace CLI {
@@ -23,12 +24,14 @@ struct EngineSettings {
   int num_threads = 1;
   std::string positioning = "GLOMAP";  // or TRANSLATION_AVERAGING
   sfm_pruning::ViewGraphPruningOptions pruning;  // GLOBAL_PRUNED and `prune`
+  IntrinsicsSettings intrinsics;                 // reconstruct and run
 };
 
 // Adds --seed, --num_threads and --positioning to `cmd`.
 void AddSolverOptions(CLI::App* cmd, EngineSettings* settings);
 
-// Adds --engine, the solver options and the pruning options (pruning_options.hpp) to `cmd`.
+// Adds --engine, the solver options, the intrinsics options (intrinsics_options.hpp) and the
+// pruning options (pruning_options.hpp) to `cmd`.
 void AddEngineOptions(CLI::App* cmd, EngineSettings* settings);
 
 // GLOBAL_PRUNED's options from the settings: the pruning options, the positioning of the
@@ -37,9 +40,11 @@ sfm_pruning::PrunedGlobalEngineOptions PrunedEngineOptions(const EngineSettings&
 
 // The verified view graph of `input`: its two-view geometries (poses re-estimated from their
 // inliers) or its putative matches, verified. Throws sfm_pruning::Error naming input.source when
-// there is no edge, or when every pair is rejected.
+// there is no edge, or when every pair is rejected. Verified with the intrinsics of `scene`
+// (e.g. calibrated ones) when given, else of input.scene.
 sfm_pruning::ViewGraph BuildVerifiedViewGraph(const EngineSettings& settings, const ReconstructionInput& input,
-                                              sfm_pruning::ViewGraphBuildReport* report);
+                                              sfm_pruning::ViewGraphBuildReport* report,
+                                              const sfm_pruning::SfmData* scene = nullptr);
 
 // Verifies (when the input holds putative matches), runs the engine and writes the outputs into
 // `output`. Throws sfm_pruning::Error (one line naming input.source) when there is no edge or
