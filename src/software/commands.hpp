@@ -9,10 +9,12 @@ class App;
 namespace prunesfm {
 
 void AddConvertCommand(CLI::App& app);
+void AddEpipolarCommand(CLI::App& app);
 void AddEvaluateCommand(CLI::App& app);
 void AddExportCommand(CLI::App& app);
 void AddPruneCommand(CLI::App& app);
 void AddReconstructCommand(CLI::App& app);
+void AddReportCommand(CLI::App& app);
 void AddRunCommand(CLI::App& app);
 void AddSynthCommand(CLI::App& app);
 

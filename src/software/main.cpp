@@ -29,6 +29,8 @@ int main(int argc, char** argv) {
   prunesfm::AddEvaluateCommand(app);
   prunesfm::AddExportCommand(app);
   prunesfm::AddSynthCommand(app);
+  prunesfm::AddReportCommand(app);
+  prunesfm::AddEpipolarCommand(app);
 
   try {
     app.parse(argc, argv);

@@ -17,6 +17,7 @@
 #include "sfm_pruning/io/openmvg_sfm_data.hpp"
 #include "sfm_pruning/io/ply.hpp"
 #include "sfm_pruning/pruning/view_graph_pruning.hpp"
+#include "sfm_pruning/report/run_view_graph.hpp"
 #include "sfm_pruning/util/error.hpp"
 #include "software/cli_support.hpp"
 #include "software/commands/pruning_options.hpp"
@@ -288,6 +289,10 @@ void RunReconstruction(const EngineSettings& settings, const ReconstructionInput
          "): " + dropped.at("reason").get<std::string>());
   }
   WriteOutputs(model, input.features, timings, output);
+  // The graph before pruning, with the cuts and subgraphs: what `prunesfm report` draws.
+  sfm_pruning::WriteRunViewGraph(
+      sfm_pruning::MakeRunViewGraph(settings.engine, graph, input.scene, pruning ? &*pruning : nullptr),
+      output / "view_graph.json");
   std::string stages;
   for (const auto& stage : timings.at("stages")) {
     char seconds[32];
@@ -298,7 +303,7 @@ void RunReconstruction(const EngineSettings& settings, const ReconstructionInput
        " views, " + std::to_string(report.num_landmarks) + " points, RMS " + std::to_string(report.final_rms_px) +
        " px; " + stages);
   Info("wrote " + (output / "sfm_data.json").string() + ", " + (output / "sparse" / "0").string() +
-       ", cloud_and_poses.ply, timings.json");
+       ", cloud_and_poses.ply, timings.json, view_graph.json");
 }
 
 }  // namespace prunesfm

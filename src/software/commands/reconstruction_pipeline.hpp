@@ -1,6 +1,6 @@
 // The part `prunesfm reconstruct` and `prunesfm run` share: engine options on the command line,
 // verification + engine, and the outputs (sfm_data.json, sparse/0, cloud_and_poses.ply,
-// timings.json).
+// timings.json, view_graph.json).
 #pragma once
 
 #include <cstdint>
