@@ -95,6 +95,8 @@ struct Solution {
   sfm_pruning::GlobalEngineReport report;
   sfm_pruning::SfmData model;
   std::optional<sfm_pruning::ViewGraphPruningReport> pruning;
+  // The graph before pruning, with the cuts and subgraphs: what `prunesfm report` draws.
+  sfm_pruning::RunViewGraph view_graph;
 };
 
 Solution Solve(const EngineSettings& settings, const ReconstructionInput& input, const sfm_pruning::SfmData& scene,
@@ -228,6 +230,8 @@ Solution Solve(const EngineSettings& settings, const ReconstructionInput& input,
     options.bundle = bundle;
     RunGlobalEngine(options, graph, scene, input.features, &solution.model, &solution.report, TerminalProgressBar());
   }
+  solution.view_graph = sfm_pruning::MakeRunViewGraph(settings.engine, graph, scene,
+                                                      solution.pruning ? &*solution.pruning : nullptr);
   return solution;
 }
 
@@ -289,10 +293,7 @@ void RunReconstruction(const EngineSettings& settings, const ReconstructionInput
          "): " + dropped.at("reason").get<std::string>());
   }
   WriteOutputs(model, input.features, timings, output);
-  // The graph before pruning, with the cuts and subgraphs: what `prunesfm report` draws.
-  sfm_pruning::WriteRunViewGraph(
-      sfm_pruning::MakeRunViewGraph(settings.engine, graph, input.scene, pruning ? &*pruning : nullptr),
-      output / "view_graph.json");
+  sfm_pruning::WriteRunViewGraph(solution.view_graph, output / "view_graph.json");
   std::string stages;
   for (const auto& stage : timings.at("stages")) {
     char seconds[32];
