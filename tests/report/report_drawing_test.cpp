@@ -77,7 +77,7 @@ TEST(ReportDrawing, GraphPanelsMarkEveryRemovedEdge) {
   EXPECT_EQ(after, DrawViewGraphSvg(graph, LayoutRunViewGraph(graph, 0), ViewGraphPanel::kAfterPruning));
 }
 
-TEST(ReportDrawing, TopViewLooksDownTheMeanUpVector) {
+TEST(ReportDrawing, TopViewLooksDownOnTheGround) {
   const SfmData scene = RingScene(8);
   TopViewScene top;
   for (const auto& [id, view] : scene.views) top.cameras.push_back({view.filename, scene.poses.at(id), {}, {}});
@@ -88,6 +88,13 @@ TEST(ReportDrawing, TopViewLooksDownTheMeanUpVector) {
   const std::string svg = DrawTopViewSvg(top, frame);
   EXPECT_EQ(Count(svg, "<polygon"), 8u);
   EXPECT_EQ(Count(svg, "<polyline"), 1u);  // the trajectory; no truth
+
+  // The same ring shot with the camera held sideways (as the Middlebury rings): the plane of the
+  // centres still gives the ground, seen from above.
+  const Eigen::Matrix3d roll = Eigen::AngleAxisd(M_PI / 2.0, Eigen::Vector3d::UnitZ()).toRotationMatrix();
+  for (TopViewCamera& camera : top.cameras) camera.pose.rotation = roll * camera.pose.rotation;
+  const TopViewFrame sideways = TopViewFrameOf(top);
+  EXPECT_NEAR(sideways.axis_x.cross(sideways.axis_y).dot(Eigen::Vector3d::UnitZ()), 1.0, 1e-9);
 }
 
 TEST(ReportDrawing, TimingBarsCoverTheUnionOfStages) {

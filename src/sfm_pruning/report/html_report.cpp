@@ -77,16 +77,7 @@ std::string SummarySection(const std::vector<RunPage>& pages) {
     cards += Card("engine", run.engine.empty() ? "unknown" : run.engine, "", "v text");
     cards += Card("registered views", std::to_string(NumRegistered(run.model)), "of " + std::to_string(run.model.views.size()));
     cards += Card("3D points", std::to_string(run.model.structure.size()));
-    if (run.final_rms_px >= 0.0) cards += Card("reprojection RMS", FormatNumber(run.final_rms_px, 3), "px");
-    if (!run.stages.empty()) cards += Card("wall time", FormatNumber(TotalSeconds(run), 2), "s");
-    if (run.view_graph) {
-      cards += Card("view-graph edges", std::to_string(run.view_graph->edges.size() - run.view_graph->NumRemovedEdges()),
-                    run.view_graph->NumRemovedEdges() > 0
-                        ? "of " + std::to_string(run.view_graph->edges.size()) + " (" +
-                              std::to_string(run.view_graph->NumRemovedEdges()) + " pruned)"
-                        : "");
-    }
-    if (run.pruning) cards += Card("subgraphs", std::to_string(run.pruning->subgraphs.size()));
+    // Accuracy first: the cards of two runs line up where it matters.
     if (page.evaluation) {
       for (const AucAtThreshold& auc : page.evaluation->auc) {
         cards += Card("AUC@" + FormatNumber(auc.threshold_deg, 1) + "\u00b0", FormatNumber(auc.auc_percent, 1), "%");
@@ -95,6 +86,16 @@ std::string SummarySection(const std::vector<RunPage>& pages) {
         cards += Card("median rotation error", FormatNumber(page.evaluation->alignment->median_rotation_error_deg, 3), "\u00b0");
       }
     }
+    if (run.final_rms_px >= 0.0) cards += Card("reprojection RMS", FormatNumber(run.final_rms_px, 3), "px");
+    if (!run.stages.empty()) cards += Card("wall time", FormatNumber(TotalSeconds(run), 2), "s");
+    if (run.view_graph) {
+      cards += Card("view-graph edges", std::to_string(run.view_graph->edges.size() - run.view_graph->NumRemovedEdges()),
+                    run.view_graph->NumRemovedEdges() > 0
+                        ? "of " + std::to_string(run.view_graph->edges.size()) + ", " +
+                              std::to_string(run.view_graph->NumRemovedEdges()) + " pruned"
+                        : "");
+    }
+    if (run.pruning) cards += Card("subgraphs", std::to_string(run.pruning->subgraphs.size()));
     bodies.push_back(cards + "</div>\n");
   }
   const std::string note = pages.front().evaluation
@@ -229,10 +230,11 @@ std::string TopViewSection(const std::vector<RunPage>& pages, const SfmData* tru
   }
   legend += "<span><span class=\"line\" style=\"border-color:#333a45\"></span>trajectory in image-name order</span></div>\n";
   const std::string note =
-      aligned ? "Seen from above (mean camera up vector), after the evaluation's robust similarity alignment to the "
-                "ground truth; a folded reconstruction stacks the cameras of twin structures on one side."
-              : "Seen from above (mean camera up vector), in the reconstruction's own frame; points clipped to the "
-                "central 96 %.";
+      aligned ? "Seen from above (the plane of the camera centres, else the cameras' mean up vector), after the "
+                "evaluation's robust similarity alignment to the ground truth: each camera is joined to its true "
+                "centre, so a folded reconstruction shows long chords across the scene."
+              : "Seen from above (the plane of the camera centres, else the cameras' mean up vector), in the "
+                "reconstruction's own frame; points clipped to the central 96 %.";
   return Section("topview", "Cameras and points (top view)", note, Columns(pages, bodies) + legend);
 }
 

@@ -40,10 +40,19 @@ TopViewFrame TopViewFrameOf(const TopViewScene& scene) {
   Eigen::Matrix3d scatter = Eigen::Matrix3d::Zero();
   for (const Eigen::Vector3d& c : centers) scatter += (c - mean) * (c - mean).transpose();
   const Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> eigen(scatter);
-  // Cameras that do not agree on "up" (a hand-held turntable, a drone looking down): use the
-  // normal of the plane the centres spread in instead.
-  if (up.norm() < 0.3 * static_cast<double>(scene.cameras.size())) {
-    up = eigen.eigenvectors().col(0);
+  // Centres spread over a plane (a ring, an orbit, a grid of aerial shots): that plane is the
+  // ground, whichever way the images were held (the Middlebury rings are shot sideways). Its
+  // normal takes the sign of the cameras' up vector, or else points away from where the cameras
+  // look (they look down at an object more often than up). Otherwise (a street, a single line
+  // of views) the mean up vector of the cameras, when they agree on one.
+  const Eigen::Vector3d spread = eigen.eigenvalues().cwiseMax(0.0);
+  const bool planar = centers.size() >= 4 && spread(1) > 0.05 * spread(2) && spread(0) < 0.2 * spread(1);
+  if (planar || up.norm() < 0.3 * static_cast<double>(scene.cameras.size())) {
+    Eigen::Vector3d normal = eigen.eigenvectors().col(0);
+    Eigen::Vector3d looking = Eigen::Vector3d::Zero();
+    for (const TopViewCamera& camera : scene.cameras) looking += camera.pose.ViewingDirection();
+    const double sign = std::abs(normal.dot(up.normalized())) > 0.5 ? normal.dot(up) : -normal.dot(looking);
+    up = sign < 0.0 ? -normal : normal;
   }
   up.normalize();
   // Largest spread of the centres within the plane orthogonal to up.

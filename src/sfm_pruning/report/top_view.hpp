@@ -1,9 +1,10 @@
 // The top view of a reconstruction: camera centres (triangles pointing along the viewing
 // direction), the trajectory in image-name order and the points, seen from "above".
 //
-// "Above" is the mean up vector of the cameras (-y of each camera in the world, since images are
-// usually taken upright), which works for orbits, streets and rings alike; the horizontal axes
-// are the principal directions of the camera centres in that plane. With ground truth the
+// "Above" is the normal of the plane of the camera centres when they spread over one (rings,
+// orbits: whichever way the images were held), else the mean up vector of the cameras (-y of each
+// camera in the world, images being usually upright: streets); the horizontal axes are the
+// principal directions of the camera centres in that plane. With ground truth the
 // estimate is first moved into the truth's frame (the evaluation's similarity), the true centres
 // are drawn as green rings and each camera is joined to its true centre.
 #pragma once
