@@ -9,18 +9,6 @@
 namespace sfm_pruning::testing {
 namespace {
 
-double DistanceToCurve(const std::vector<PixelPolyline>& pieces, const Eigen::Vector2d& x) {
-  double best = 1e300;
-  for (const PixelPolyline& piece : pieces) {
-    for (size_t k = 0; k + 1 < piece.size(); ++k) {
-      const Eigen::Vector2d d = piece[k + 1] - piece[k];
-      const double t = std::clamp((x - piece[k]).dot(d) / d.squaredNorm(), 0.0, 1.0);
-      best = std::min(best, (piece[k] + t * d - x).norm());
-    }
-  }
-  return best;
-}
-
 void ExpectCurvesThroughObservations(const SfmData& scene, double tolerance_px) {
   size_t checked = 0;
   for (const auto& [id, landmark] : scene.structure) {

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <filesystem>
+#include <limits>
 #include <map>
 
 #include "sfm_pruning/geometry/epipolar_geometry.hpp"
@@ -129,6 +130,19 @@ std::vector<PixelPolyline> EpipolarCurve(const CameraIntrinsics& intrinsics_a, c
   }
   if (current.size() >= 2) pieces.push_back(current);
   return pieces;
+}
+
+double DistanceToCurve(const std::vector<PixelPolyline>& curve, const Eigen::Vector2d& pixel) {
+  double best = std::numeric_limits<double>::infinity();
+  for (const PixelPolyline& piece : curve) {
+    for (size_t k = 0; k + 1 < piece.size(); ++k) {
+      const Eigen::Vector2d d = piece[k + 1] - piece[k];
+      const double squared = d.squaredNorm();
+      const double t = squared > 0.0 ? std::clamp((pixel - piece[k]).dot(d) / squared, 0.0, 1.0) : 0.0;
+      best = std::min(best, (piece[k] + t * d - pixel).norm());
+    }
+  }
+  return best;
 }
 
 Eigen::Vector2d ChooseCheckPoint(const SfmData& model, const std::string& image) {

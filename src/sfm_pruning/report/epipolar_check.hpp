@@ -30,6 +30,9 @@ std::vector<PixelPolyline> EpipolarCurve(const CameraIntrinsics& intrinsics_a, c
                                          const CameraIntrinsics& intrinsics_b, const Pose& pose_b,
                                          const Eigen::Vector2d& pixel_a, int samples = 240);
 
+// Distance in pixels from `pixel` to the nearest piece of `curve` (infinity when it is empty).
+double DistanceToCurve(const std::vector<PixelPolyline>& curve, const Eigen::Vector2d& pixel);
+
 struct EpipolarCheckOptions {
   size_t max_other_views = 3;
   // Landmarks observed within this fraction of the image diagonal from the point define the

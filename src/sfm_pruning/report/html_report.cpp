@@ -245,6 +245,38 @@ bool IsRegistered(const SfmData& model, const std::string& image) {
   return false;
 }
 
+// The images each check draws lines in. Without ground truth: those that see the region most.
+// With it, among the 4 x max_other_views that see it most, those where some run's matched
+// feature lies farthest from the true epipolar line come first: a fold (the twin of the point
+// matched in its place) shows there, not in the neighbours that agree.
+std::vector<std::string> ChooseOtherImages(const std::vector<RunPage>& pages, const EpipolarRequest& request,
+                                           const EpipolarCheckOptions& options, const SfmData* truth) {
+  const SfmData& first = pages.front().run->model;
+  if (truth == nullptr) return ImagesSeeingRegion(first, request.image, request.point, options);
+  EpipolarCheckOptions wide = options;
+  wide.max_other_views = 4 * options.max_other_views;
+  std::vector<std::pair<double, std::string>> scored;
+  for (const std::string& candidate : ImagesSeeingRegion(first, request.image, request.point, wide)) {
+    double miss = 0.0;
+    for (const RunPage& page : pages) {
+      if (!IsRegistered(page.run->model, request.image) || !IsRegistered(page.run->model, candidate)) continue;
+      const EpipolarCheck check =
+          ComputeEpipolarCheck(page.run->model, request.image, request.point, {candidate}, truth, options);
+      const EpipolarPanel& panel = check.others.front();
+      if (panel.matched_feature && !panel.truth.empty()) {
+        miss = std::max(miss, std::min(1e6, DistanceToCurve(panel.truth, *panel.matched_feature)));
+      }
+    }
+    scored.emplace_back(miss, candidate);
+  }
+  // Stable: equal misses keep the region order.
+  std::stable_sort(scored.begin(), scored.end(), [](const auto& a, const auto& b) { return a.first > b.first; });
+  std::vector<std::string> images;
+  for (size_t k = 0; k < std::min(options.max_other_views, scored.size()); ++k) images.push_back(scored[k].second);
+  std::sort(images.begin(), images.end());
+  return images;
+}
+
 std::string EpipolarSection(const std::vector<RunPage>& pages, const HtmlReportInput& input) {
   const SfmData& first = pages.front().run->model;
   std::vector<EpipolarRequest> requests = input.checks;
@@ -261,7 +293,7 @@ std::string EpipolarSection(const std::vector<RunPage>& pages, const HtmlReportI
   image_options.panel_height = 300;
   std::string body;
   for (const EpipolarRequest& request : requests) {
-    const std::vector<std::string> others = ImagesSeeingRegion(first, request.image, request.point, options);
+    const std::vector<std::string> others = ChooseOtherImages(pages, request, options, truth);
     body += "<div class=\"check\"><h3>" + EscapeXml(request.image) + " at (" + FormatNumber(request.point.x(), 1) +
             ", " + FormatNumber(request.point.y(), 1) + ")</h3>\n";
     std::vector<std::string> bodies;
