@@ -82,12 +82,13 @@ void PruningTestScene::AddExactEdge(IndexT a, IndexT b, size_t num_points) {
   graph.AddEdge(a, b, matches, relative);
 }
 
-void PruningTestScene::AddTwinEdge(IndexT i, IndexT j, const Similarity& twin) {
+void PruningTestScene::AddTwinEdge(IndexT i, IndexT j, const Similarity& twin, size_t num_points) {
   RelativePose relative = RelativePoseBetween(poses[i], poses[j]);
   relative.translation.normalize();
   std::vector<FeatureMatch> matches;
   FeatureSet& features_j = features.at(j);
-  for (IndexT p = 0; p < points.size(); ++p) {
+  const size_t n = num_points == 0 ? points.size() : num_points;
+  for (IndexT p = 0; p < n; ++p) {
     const auto feature = static_cast<IndexT>(features_j.size());
     features_j.keypoints.push_back(MakeKeypoint(ProjectPoint(*this, j, twin.Apply(points[p]))));
     matches.push_back({p, feature});

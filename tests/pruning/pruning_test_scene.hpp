@@ -35,7 +35,8 @@ struct PruningTestScene {
   void AddExactEdge(IndexT a, IndexT b, size_t num_points = 0);
   // Adds edge (i, j) whose matches pair i's feature of point p with a new feature of j placed
   // at the projection of twin(X_p): a repeated structure, so PnP puts j at a wrong pose.
-  void AddTwinEdge(IndexT i, IndexT j, const Similarity& twin);
+  // Only the first `num_points` points are copied (all when 0): the rest is unique texture.
+  void AddTwinEdge(IndexT i, IndexT j, const Similarity& twin, size_t num_points = 0);
   // The solution of the subgraph `view_ids` in the frame `frame`: poses and every point,
   // observed by every view of the subgraph.
   SubgraphSolution Solution(const std::vector<IndexT>& view_ids, const Similarity& frame) const;

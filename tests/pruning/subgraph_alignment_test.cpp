@@ -113,6 +113,65 @@ TEST(SubgraphAlignment, RansacRemovesEdgesToTheTwinStructure) {
   }
 }
 
+// Twin edges outnumber the true ones but match only the copied third of the structure: the
+// paper's largest consensus keeps the twins, the match coverage keeps the true edges.
+TEST(SubgraphAlignment, MatchCoverageKeepsTrueEdgesOutnumberedByTwinEdges) {
+  PruningTestScene scene = MakePruningTestScene(16, 60, 11);
+  const std::vector<ViewPair> true_edges = {{5, 8}, {6, 8}, {7, 8}, {6, 9}, {7, 9}};  // 11°–34° apart
+  // View v sits at 11.25°·v on the arc; the copy is the structure turned 90° about z, so PnP
+  // puts j of a twin edge (i, j) 90° back along the arc, next to i.
+  const std::vector<ViewPair> twin_edges = {{0, 8}, {1, 9},  {2, 10}, {3, 11}, {4, 12},
+                                            {5, 13}, {6, 14}, {7, 15}, {0, 9}, {1, 10}};
+  for (const ViewPair& edge : true_edges) scene.AddExactEdge(edge.first, edge.second);
+  Similarity twin;
+  twin.rotation = ExpSO3(DegToRad(90.0) * Eigen::Vector3d::UnitZ());
+  for (const ViewPair& edge : twin_edges) scene.AddTwinEdge(edge.first, edge.second, twin, 20);
+  const SubgraphSolution k1 = scene.Solution(kViewsK1, RandomSimilarity(1, kScaleK1));
+  const SubgraphSolution k2 = scene.Solution(kViewsK2, RandomSimilarity(2, kScaleK2));
+  std::vector<ViewPair> sorted_true = true_edges;
+  std::sort(sorted_true.begin(), sorted_true.end());
+  std::vector<ViewPair> sorted_twins = twin_edges;
+  std::sort(sorted_twins.begin(), sorted_twins.end());
+
+  // Samples of two edges: with 0.4 · 15 = 6 a clean sample is rare (the engine caps it too).
+  SubgraphAlignmentOptions options;
+  options.sample_fraction = 0.15;
+  SubgraphAlignmentOptions paper = options;
+  paper.hypothesis_selection = SubgraphAlignmentOptions::HypothesisSelection::kLargestConsensus;
+  const SubgraphAlignmentResult largest =
+      AlignSubgraphPair(scene.graph, k1, k2, scene.views_and_intrinsics, scene.features, paper);
+  ASSERT_EQ(largest.status, SubgraphAlignmentStatus::kAligned);
+  EXPECT_EQ(largest.hypotheses.size(), 1u);
+  EXPECT_EQ(largest.KeptEdges(), sorted_twins);
+  EXPECT_EQ(largest.RemovedEdges(), sorted_true);
+
+  const SubgraphAlignmentResult coverage =
+      AlignSubgraphPair(scene.graph, k1, k2, scene.views_and_intrinsics, scene.features, options);
+  ASSERT_EQ(coverage.status, SubgraphAlignmentStatus::kAligned);
+  EXPECT_EQ(coverage.KeptEdges(), sorted_true);
+  EXPECT_EQ(coverage.RemovedEdges(), sorted_twins);
+  EXPECT_NEAR(coverage.beta, kTrueBeta, 1e-4);
+  ASSERT_EQ(coverage.hypotheses.size(), 2u);
+  EXPECT_EQ(coverage.selected_hypothesis, 1);
+  EXPECT_EQ(coverage.hypotheses[0].consensus_size, 10u);  // the twins, found first
+  EXPECT_EQ(coverage.hypotheses[1].consensus_size, 5u);
+  // A true edge matches every landmark its placed view sees; a twin edge at most the copied third.
+  EXPECT_EQ(coverage.hypotheses[1].matched_landmarks, coverage.hypotheses[1].expected_landmarks);
+  EXPECT_GT(coverage.hypotheses[1].expected_landmarks, 0u);
+  EXPECT_EQ(3 * coverage.hypotheses[0].matched_landmarks, coverage.hypotheses[0].expected_landmarks);
+  EXPECT_LT(coverage.hypotheses[0].coverage_score, 0.0);  // ruled out
+  EXPECT_GT(coverage.hypotheses[1].coverage_score, 0.0);
+  for (const auto& decision : coverage.edges) {
+    const bool is_true = std::count(true_edges.begin(), true_edges.end(),
+                                    ViewPair{decision.placement.view_i, decision.placement.view_j}) > 0;
+    if (is_true) {
+      EXPECT_EQ(decision.placement.num_matched_landmarks, decision.placement.num_expected_landmarks);
+    } else {
+      EXPECT_EQ(decision.verdict, InterSubgraphVerdict::kRotationDeviation);
+    }
+  }
+}
+
 TEST(SubgraphAlignment, SameSeedSameDecisions) {
   TwoSubgraphs setup;
   SubgraphAlignmentOptions options;

@@ -20,6 +20,11 @@ struct Hypothesis {
   Eigen::Vector3d mean_translation = Eigen::Vector3d::Zero();
 };
 
+struct EdgeCoverage {
+  size_t expected = 0;
+  size_t matched = 0;
+};
+
 struct Deviation {
   double rotation_deg = 0.0;
   double translation = 0.0;
@@ -98,40 +103,113 @@ void ApplyPolicyToVoters(SubgraphAlignmentResult* result, InterSubgraphVerdict v
   }
 }
 
-// Runs RANSAC over the voting edges and writes the verdicts of the voters into `result`.
-void RunRansac(const std::vector<ChainedRelativePose>& chains, const std::vector<size_t>& voter_edge_index,
-               const Options& options, SubgraphAlignmentResult* result) {
-  const size_t n = chains.size();
-  result->sample_size = SampleSize(n, options);
-  std::mt19937_64 rng(options.seed);
+struct Candidate {
+  Hypothesis hypothesis;
+  Consensus consensus;  // over every voting edge
+  int iteration = -1;
+};
+
+// One RANSAC run whose samples are drawn from `pool` (indices into chains); the consensus is
+// counted over every chain. Empty when every sample was degenerate.
+std::optional<Candidate> RansacOverPool(const std::vector<ChainedRelativePose>& chains,
+                                        const std::vector<size_t>& pool, const Options& options, std::mt19937_64* rng,
+                                        SubgraphAlignmentResult* result) {
+  const size_t n = pool.size();
+  const size_t sample_size = SampleSize(n, options);
+  if (result->sample_size == 0) result->sample_size = sample_size;
   std::vector<size_t> order(n);
-  std::optional<Hypothesis> best;
-  Consensus best_consensus;
+  std::optional<Candidate> best;
   for (int iteration = 0; iteration < options.num_iterations; ++iteration) {
     std::iota(order.begin(), order.end(), size_t{0});
-    for (size_t k = 0; k < result->sample_size; ++k) {  // partial Fisher–Yates
+    for (size_t k = 0; k < sample_size; ++k) {  // partial Fisher–Yates
       std::uniform_int_distribution<size_t> pick(k, n - 1);
-      std::swap(order[k], order[pick(rng)]);
+      std::swap(order[k], order[pick(*rng)]);
     }
-    std::vector<size_t> sample(order.begin(), order.begin() + static_cast<std::ptrdiff_t>(result->sample_size));
+    std::vector<size_t> sample;
+    sample.reserve(sample_size);
+    for (size_t k = 0; k < sample_size; ++k) sample.push_back(pool[order[k]]);
     std::sort(sample.begin(), sample.end());
     const std::optional<Hypothesis> hypothesis = FitHypothesis(chains, sample, options);
     if (!hypothesis) continue;
     ++result->num_valid_hypotheses;
     Consensus consensus = CountConsensus(chains, *hypothesis, options);
-    const bool better = !best || consensus.count > best_consensus.count ||
-                        (consensus.count == best_consensus.count && consensus.total_error < best_consensus.total_error);
-    if (better) {
-      best = hypothesis;
-      best_consensus = std::move(consensus);
-      result->best_iteration = iteration;
-    }
+    const bool better = !best || consensus.count > best->consensus.count ||
+                        (consensus.count == best->consensus.count &&
+                         consensus.total_error < best->consensus.total_error);
+    if (better) best = Candidate{*hypothesis, std::move(consensus), iteration};
   }
-  if (!best) {
+  return best;
+}
+
+// Σ over the consensus of (matched − break_even · expected) landmarks (EdgePlacement coverage).
+double CoverageScore(const Consensus& consensus, const std::vector<EdgeCoverage>& coverage, const Options& options,
+                     size_t* expected, size_t* matched) {
+  *expected = 0;
+  *matched = 0;
+  for (size_t k = 0; k < coverage.size(); ++k) {
+    if (!consensus.inlier[k]) continue;
+    *expected += coverage[k].expected;
+    *matched += coverage[k].matched;
+  }
+  return static_cast<double>(*matched) - options.coverage_break_even * static_cast<double>(*expected);
+}
+
+// Runs RANSAC over the voting edges and writes the verdicts of the voters into `result`.
+// kLargestConsensus keeps the first run's winner (the paper). kMatchCoverage runs RANSAC again on
+// the edges outside every consensus found so far (up to max_hypotheses candidates) and keeps the
+// candidate with the best coverage score.
+void RunRansac(const std::vector<ChainedRelativePose>& chains, const std::vector<EdgeCoverage>& coverage,
+               const std::vector<size_t>& voter_edge_index, const Options& options, SubgraphAlignmentResult* result) {
+  const size_t n = chains.size();
+  std::mt19937_64 rng(options.seed);
+  std::vector<size_t> pool(n);
+  std::iota(pool.begin(), pool.end(), size_t{0});
+  std::vector<Candidate> candidates;
+  const size_t max_candidates =
+      options.hypothesis_selection == Options::HypothesisSelection::kMatchCoverage ? options.max_hypotheses : 1;
+  while (candidates.size() < std::max<size_t>(max_candidates, 1)) {
+    std::optional<Candidate> candidate = RansacOverPool(chains, pool, options, &rng, result);
+    if (!candidate) break;
+    // A later candidate must be backed by a consensus of its own (not just the leftovers).
+    if (!candidates.empty() && candidate->consensus.count < std::max<size_t>(options.min_edges_for_ransac, 2)) break;
+    candidates.push_back(std::move(*candidate));
+    std::vector<size_t> rest;
+    for (size_t k : pool) {
+      bool explained = false;
+      for (const Candidate& c : candidates) explained = explained || c.consensus.inlier[k];
+      if (!explained) rest.push_back(k);
+    }
+    if (rest.size() < std::max<size_t>(options.min_edges_for_ransac, 2)) break;
+    pool = std::move(rest);
+  }
+  if (candidates.empty()) {
     result->status = SubgraphAlignmentStatus::kNoValidHypothesis;
     ApplyPolicyToVoters(result, InterSubgraphVerdict::kUnjudged, true);
     return;
   }
+  size_t chosen = 0;
+  for (size_t c = 0; c < candidates.size(); ++c) {
+    AlignmentHypothesis summary;
+    summary.consensus_size = candidates[c].consensus.count;
+    summary.beta = candidates[c].hypothesis.beta;
+    summary.coverage_score = CoverageScore(candidates[c].consensus, coverage, options, &summary.expected_landmarks,
+                                           &summary.matched_landmarks);
+    result->hypotheses.push_back(summary);
+  }
+  // Candidates whose edges miss more landmarks than the break-even are ruled out; the largest
+  // consensus among the others wins (the paper's rule). If all are ruled out, the best score.
+  const auto ruled_out = [&](size_t c) { return result->hypotheses[c].coverage_score < 0.0; };
+  for (size_t c = 1; c < candidates.size(); ++c) {
+    const AlignmentHypothesis& current = result->hypotheses[chosen];
+    const AlignmentHypothesis& other = result->hypotheses[c];
+    const bool better = ruled_out(chosen) ? (!ruled_out(c) || other.coverage_score > current.coverage_score)
+                                          : (!ruled_out(c) && other.consensus_size > current.consensus_size);
+    if (better) chosen = c;
+  }
+  result->selected_hypothesis = static_cast<int>(chosen);
+  const std::optional<Hypothesis> best = candidates[chosen].hypothesis;
+  const Consensus& best_consensus = candidates[chosen].consensus;
+  result->best_iteration = candidates[chosen].iteration;
   result->status = SubgraphAlignmentStatus::kAligned;
   result->beta = best->beta;
   result->mean_rotation = best->mean_rotation;
@@ -226,6 +304,7 @@ SubgraphAlignmentResult AlignSubgraphPair(const ViewGraph& graph, const Subgraph
   const Pose mean_k1 = SubgraphMeanPose(k1);
   const Pose mean_k2 = SubgraphMeanPose(k2);
   std::vector<ChainedRelativePose> chains;
+  std::vector<EdgeCoverage> coverage;
   std::vector<size_t> voter_edge_index;
   for (const ViewPair& edge : connecting) {
     InterSubgraphEdgeDecision decision;
@@ -237,6 +316,7 @@ SubgraphAlignmentResult AlignSubgraphPair(const ViewGraph& graph, const Subgraph
     if (decision.voted) {
       chains.push_back(ChainRelativePose(mean_k1, decision.placement.pose_j_in_k1, pose_j_in_k2->second, mean_k2,
                                          options.scale_application));
+      coverage.push_back({decision.placement.num_expected_landmarks, decision.placement.num_matched_landmarks});
       voter_edge_index.push_back(result.edges.size());
     } else {
       decision.verdict = InterSubgraphVerdict::kCannotVote;
@@ -251,7 +331,7 @@ SubgraphAlignmentResult AlignSubgraphPair(const ViewGraph& graph, const Subgraph
                         options.few_edges == Options::FewEdgesPolicy::kKeepAll);
     return result;
   }
-  RunRansac(chains, voter_edge_index, options, &result);
+  RunRansac(chains, coverage, voter_edge_index, options, &result);
   return result;
 }
 

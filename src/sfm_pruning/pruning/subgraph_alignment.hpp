@@ -45,6 +45,20 @@ struct SubgraphAlignmentOptions {
   double max_translation_deviation_fraction = 0.05;  // E_t / |t̄|
   uint64_t seed = 0;                // RANSAC sampler (std::mt19937_64)
 
+  // Which RANSAC hypothesis decides the pair. kLargestConsensus: the one with the most
+  // consistent edges (the paper). kMatchCoverage: RANSAC is run again on the edges outside the
+  // consensus sets found so far, up to max_hypotheses candidates, and the candidate whose
+  // consensus edges score highest, Σ (matched − coverage_break_even · expected) landmarks
+  // (EdgePlacement's match coverage), wins; a single candidate wins whatever its score. Why: on
+  // scenes whose copies fill the views (orbit_symmetric: 114 twin against 68 true edges between
+  // two arcs) the twin edges are the larger consistent set, but each of them matches only the copy
+  // and misses the unique texture its placed view should see (measured coverage ≤ 0.58 against
+  // 0.6–0.9 for true edges; docs/pruning.md).
+  enum class HypothesisSelection { kLargestConsensus, kMatchCoverage };
+  HypothesisSelection hypothesis_selection = HypothesisSelection::kMatchCoverage;
+  size_t max_hypotheses = 3;
+  double coverage_break_even = 0.5;
+
   // Pairs with fewer voting edges than this are not tested by RANSAC (the paper is silent).
   // With 1–2 votes there is no majority to tell the wrong edge from the right one.
   size_t min_edges_for_ransac = 3;
@@ -88,6 +102,15 @@ struct InterSubgraphEdgeDecision {
   double translation_threshold = 0.0;  // max_translation_deviation_fraction · |t̄|
 };
 
+// One candidate of the RANSAC (one per run; a single one under kLargestConsensus).
+struct AlignmentHypothesis {
+  size_t consensus_size = 0;   // voting edges within the thresholds
+  double beta = 1.0;
+  size_t expected_landmarks = 0;  // Σ over the consensus edges (EdgePlacement coverage)
+  size_t matched_landmarks = 0;
+  double coverage_score = 0.0;  // matched − coverage_break_even · expected
+};
+
 struct SubgraphAlignmentResult {
   SubgraphAlignmentStatus status = SubgraphAlignmentStatus::kNoEdges;
   // The selected hypothesis (kAligned only): scale k2 -> k1, mean chained rotation and
@@ -99,6 +122,8 @@ struct SubgraphAlignmentResult {
   size_t num_voting_edges = 0;
   size_t sample_size = 0;
   size_t num_valid_hypotheses = 0;
+  std::vector<AlignmentHypothesis> hypotheses;  // in the order found
+  int selected_hypothesis = -1;                 // index into hypotheses (kAligned only)
   std::vector<InterSubgraphEdgeDecision> edges;  // one per connecting edge, (i, j) order
 
   std::vector<ViewPair> KeptEdges() const;     // oriented (i, j)

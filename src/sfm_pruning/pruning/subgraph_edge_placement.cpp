@@ -1,6 +1,7 @@
 #include "sfm_pruning/pruning/subgraph_edge_placement.hpp"
 
 #include <algorithm>
+#include <set>
 
 namespace sfm_pruning {
 
@@ -11,6 +12,36 @@ AbsolutePoseOptions DefaultSubgraphPnpOptions() {
   options.min_num_inliers = 12;
   return options;
 }
+
+namespace {
+
+// Fills num_expected_landmarks / num_matched_landmarks of a placed edge (see EdgePlacement).
+void MeasureMatchCoverage(IndexT view_i, const Pose& pose_i, const std::map<ObservationKey, IndexT>& landmarks_k1,
+                          const SubgraphSolution& k1, const CameraIntrinsics& intrinsics_j,
+                          const std::set<IndexT>& matched_landmarks, const EdgePlacementOptions& options,
+                          EdgePlacement* placement) {
+  const Pose& pose_j = placement->pose_j_in_k1;
+  const double margin = options.coverage_image_margin_px;
+  const double max_angle = DegToRad(options.coverage_max_ray_angle_deg);
+  std::set<IndexT> seen_by_i;
+  // landmarks_k1 is ordered by (view, feature): i's observations are one contiguous range.
+  for (auto it = landmarks_k1.lower_bound({view_i, 0}); it != landmarks_k1.end() && it->first.first == view_i; ++it) {
+    if (!seen_by_i.insert(it->second).second) continue;
+    const Eigen::Vector3d& X = k1.landmarks.at(it->second).X;
+    const Eigen::Vector3d X_j = pose_j.ToCamera(X);
+    if (!(X_j.z() > 0.0)) continue;
+    const Eigen::Vector2d pixel = intrinsics_j.Project(X_j);
+    if (!(pixel.x() >= margin && pixel.y() >= margin && pixel.x() <= intrinsics_j.width() - margin &&
+          pixel.y() <= intrinsics_j.height() - margin)) {
+      continue;
+    }
+    if (AngleBetweenVectors(X - pose_i.center, X - pose_j.center) > max_angle) continue;
+    ++placement->num_expected_landmarks;
+    placement->num_matched_landmarks += matched_landmarks.count(it->second);
+  }
+}
+
+}  // namespace
 
 const char* EdgePlacementStatusName(EdgePlacementStatus status) {
   switch (status) {
@@ -52,11 +83,13 @@ EdgePlacement PlaceViewInSubgraph(const ViewGraph& graph, IndexT view_i, IndexT 
 
   std::vector<Eigen::Vector3d> bearings;
   std::vector<Eigen::Vector3d> points;
+  std::set<IndexT> matched_landmarks;
   for (const FeatureMatch& match : graph.OrientedMatches(view_i, view_j)) {
     const auto landmark = landmarks_k1.find({view_i, match.i});
     if (landmark == landmarks_k1.end() || match.j >= features_j->second.size()) continue;
     bearings.push_back(intrinsics->second.Unproject(features_j->second.Position(match.j)));
     points.push_back(k1.landmarks.at(landmark->second).X);
+    matched_landmarks.insert(landmark->second);
   }
   placement.num_correspondences = points.size();
   if (points.size() < options.min_correspondences) {
@@ -75,6 +108,11 @@ EdgePlacement PlaceViewInSubgraph(const ViewGraph& graph, IndexT view_i, IndexT 
   }
   placement.status = EdgePlacementStatus::kPlaced;
   placement.pose_j_in_k1 = pose.pose;
+  const auto pose_i = k1.poses.find(view_i);
+  if (pose_i != k1.poses.end()) {
+    MeasureMatchCoverage(view_i, pose_i->second, landmarks_k1, k1, intrinsics->second, matched_landmarks, options,
+                         &placement);
+  }
   return placement;
 }
 

@@ -34,6 +34,12 @@ struct EdgePlacementOptions {
   // intrinsics (pnp.focal_length_px is overwritten). pnp.ransac.seed is mixed with the edge's
   // view ids, so every edge has its own deterministic sampler.
   AbsolutePoseOptions pnp = DefaultSubgraphPnpOptions();
+  // Match coverage of a placed edge (EdgePlacement::num_expected_landmarks): a landmark of k1
+  // observed by i is expected in j when it lies in front of the placed j, projects at least
+  // coverage_image_margin_px inside j's image, and the rays from i and from j to it differ by at
+  // most coverage_max_ray_angle_deg (beyond that, descriptors are not expected to match).
+  double coverage_max_ray_angle_deg = 45.0;
+  double coverage_image_margin_px = 10.0;
 };
 
 enum class EdgePlacementStatus {
@@ -53,6 +59,12 @@ struct EdgePlacement {
   size_t num_correspondences = 0;
   int num_pnp_inliers = 0;
   Pose pose_j_in_k1;  // valid when status == kPlaced
+  // Match coverage (kPlaced only): of the landmarks of k1 observed by i that the placed j is
+  // expected to see, how many the edge matched. A true edge matches most of them; an edge that
+  // matched a copy of the structure misses everything outside the copy (the unique texture
+  // around it), so its ratio stays near the copy's share of i's points.
+  size_t num_expected_landmarks = 0;
+  size_t num_matched_landmarks = 0;
 };
 
 // Valid edges of `graph` with one end in `views_k1` and the other in `views_k2`, oriented

@@ -69,6 +69,8 @@ void PruneViewGraph(const ViewGraphPruningOptions& options, ViewGraph* graph, co
     pair_report.num_edges = alignment.edges.size();
     pair_report.num_voting_edges = alignment.num_voting_edges;
     pair_report.beta = alignment.beta;
+    pair_report.hypotheses = alignment.hypotheses;
+    pair_report.selected_hypothesis = alignment.selected_hypothesis;
     for (const InterSubgraphEdgeDecision& decision : alignment.edges) {
       if (decision.kept) continue;
       const EdgeInvalidation why = InterSubgraphInvalidation(decision, alignment_options);

@@ -43,6 +43,8 @@ struct SubgraphPairReport {
   size_t num_voting_edges = 0;
   size_t num_removed_edges = 0;
   double beta = 1.0;
+  std::vector<AlignmentHypothesis> hypotheses;  // RANSAC candidates (SubgraphAlignmentResult)
+  int selected_hypothesis = -1;
 };
 
 struct RemovedEdge {

@@ -48,7 +48,17 @@ nlohmann::json PruningReportJson(const sfm_pruning::ViewGraphPruningReport& prun
   }
   nlohmann::json pairs = nlohmann::json::array();
   for (const SubgraphPairReport& pair : pruning.pairs) {
-    pairs.push_back({{"k1", pair.k1},
+    nlohmann::json hypotheses = nlohmann::json::array();
+    for (const AlignmentHypothesis& h : pair.hypotheses) {
+      hypotheses.push_back({{"consensus_edges", h.consensus_size},
+                            {"beta", h.beta},
+                            {"expected_landmarks", h.expected_landmarks},
+                            {"matched_landmarks", h.matched_landmarks},
+                            {"coverage_score", h.coverage_score}});
+    }
+    pairs.push_back({{"hypotheses", std::move(hypotheses)},
+                     {"selected_hypothesis", pair.selected_hypothesis},
+                     {"k1", pair.k1},
                      {"k2", pair.k2},
                      {"status", SubgraphAlignmentStatusName(pair.status)},
                      {"edges", pair.num_edges},
