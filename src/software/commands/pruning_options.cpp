@@ -2,6 +2,9 @@
 
 #include <CLI/CLI.hpp>
 
+#include <map>
+#include <string>
+
 namespace prunesfm {
 
 void AddPruningOptions(CLI::App* cmd, sfm_pruning::ViewGraphPruningOptions* options) {
@@ -59,6 +62,20 @@ void AddPruningOptions(CLI::App* cmd, sfm_pruning::ViewGraphPruningOptions* opti
       ->capture_default_str();
   group->add_option("--prune_max_sample_size", options->max_sample_size,
                     "Cap on the RANSAC sample of a pair (0: no cap, the plain fraction)")
+      ->capture_default_str();
+  group->add_option("--prune_hypothesis_selection", alignment.hypothesis_selection,
+                    "largest_consensus: the paper's vote; match_coverage: rule out RANSAC candidates whose "
+                    "edges miss the landmarks their placed views should see (docs/pruning.md)")
+      ->transform(CLI::CheckedTransformer(
+          std::map<std::string, sfm_pruning::SubgraphAlignmentOptions::HypothesisSelection>{
+              {"largest_consensus", sfm_pruning::SubgraphAlignmentOptions::HypothesisSelection::kLargestConsensus},
+              {"match_coverage", sfm_pruning::SubgraphAlignmentOptions::HypothesisSelection::kMatchCoverage}},
+          CLI::ignore_case))
+      ->default_str("match_coverage");
+  group->add_option("--prune_coverage_break_even", alignment.coverage_break_even,
+                    "match_coverage: a candidate whose edges match fewer than this fraction of the landmarks "
+                    "they should see is ruled out")
+      ->check(CLI::Range(0.0, 1.0))
       ->capture_default_str();
   group->add_option("--prune_max_rotation_deviation_deg", alignment.max_rotation_deviation_deg,
                     "E_r: rotation deviation of an edge from the RANSAC hypothesis")
