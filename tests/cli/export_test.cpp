@@ -26,8 +26,8 @@ fs::path MakeModel(const fs::path& dir, SfmData* data) {
 
 CommandResult Export(const fs::path& model, const std::string& format, const fs::path& output,
                      std::vector<std::string> extra = {}) {
-  std::vector<std::string> args = {"export", "--model", model.string(), "--format", format, "--output", output.string(),
-                                   "--num_threads", "2"};
+  std::vector<std::string> args = {"export",   "--model",       model.string(),  "--format", format,
+                                   "--output", output.string(), "--num_threads", "2"};
   args.insert(args.end(), extra.begin(), extra.end());
   return RunPrunesfm(args);
 }
@@ -43,7 +43,8 @@ TEST(CliExport, WritesEveryFormat) {
   ASSERT_EQ(result.exit_code, 0) << result.err;
   const OpenMvsScene scene = ReadOpenMvsScene(dir / "mvs" / "scene.mvs");
   ASSERT_EQ(scene.images.size(), 3u);
-  for (const OpenMvsScene::Image& image : scene.images) EXPECT_TRUE(fs::is_regular_file(dir / "mvs" / image.name));
+  for (const OpenMvsScene::Image& image : scene.images)
+    EXPECT_TRUE(fs::is_regular_file(dir / "mvs" / image.name));
   EXPECT_EQ(scene.vertex_colors[7][0], colored.structure[7].color[2]);
 
   result = Export(model, "colmap-undistorted", dir / "dense", {"--keep_all_pixels"});
@@ -65,7 +66,8 @@ TEST(CliExport, WritesEveryFormat) {
   const SfmData points = ReadPlyPoints(dir / "points.ply");
   ASSERT_EQ(points.structure.size(), 40u);  // points only, no camera centres
   size_t k = 0;
-  for (const auto& [id, landmark] : points.structure) EXPECT_EQ(landmark.color, colored.structure.at(k++).color);
+  for (const auto& [id, landmark] : points.structure)
+    EXPECT_EQ(landmark.color, colored.structure.at(k++).color);
 
   result = Export(model, "json", dir / "coloured.json");
   ASSERT_EQ(result.exit_code, 0) << result.err;

@@ -22,12 +22,16 @@ std::vector<NamedCamera> Cameras() {
   return {
       {"pinhole", CameraIntrinsics::Pinhole(320, 240, 300.0, 161.0, 118.5)},
       {"pinhole_fx_fy", CameraIntrinsics(CameraModel::kPinholeFxFy, 320, 240, {300.0, 290.0, 161.0, 118.5})},
-      {"radial_k1_barrel", CameraIntrinsics(CameraModel::kPinholeRadialK1, 320, 240, {300.0, 161.0, 118.5, -0.25})},
-      {"radial_k1_pincushion", CameraIntrinsics(CameraModel::kPinholeRadialK1, 320, 240, {300.0, 158.0, 121.5, 0.2})},
-      {"radial_k3", CameraIntrinsics(CameraModel::kPinholeRadialK3, 320, 240, {300.0, 161.0, 118.5, -0.3, 0.12, -0.02})},
-      {"brown_t2",
-       CameraIntrinsics(CameraModel::kPinholeBrownT2, 320, 240, {300.0, 161.0, 118.5, -0.2, 0.05, 0.0, 0.004, -0.003})},
-      {"fisheye", CameraIntrinsics(CameraModel::kFisheye, 320, 240, {160.0, 160.5, 119.0, 0.02, -0.01, 0.003, 0.0})},
+      {"radial_k1_barrel",
+       CameraIntrinsics(CameraModel::kPinholeRadialK1, 320, 240, {300.0, 161.0, 118.5, -0.25})},
+      {"radial_k1_pincushion",
+       CameraIntrinsics(CameraModel::kPinholeRadialK1, 320, 240, {300.0, 158.0, 121.5, 0.2})},
+      {"radial_k3",
+       CameraIntrinsics(CameraModel::kPinholeRadialK3, 320, 240, {300.0, 161.0, 118.5, -0.3, 0.12, -0.02})},
+      {"brown_t2", CameraIntrinsics(CameraModel::kPinholeBrownT2, 320, 240,
+                                    {300.0, 161.0, 118.5, -0.2, 0.05, 0.0, 0.004, -0.003})},
+      {"fisheye",
+       CameraIntrinsics(CameraModel::kFisheye, 320, 240, {160.0, 160.5, 119.0, 0.02, -0.01, 0.003, 0.0})},
   };
 }
 
@@ -89,8 +93,8 @@ TEST(Undistortion, KeepAllPixelsModeLosesNoSourcePixel) {
     double outermost = 0;
     for (int k = 0; k <= 100; ++k) {
       const double u = 319.0 * k / 100, v = 239.0 * k / 100;
-      for (const Eigen::Vector2d& p : {Eigen::Vector2d(u, 0), Eigen::Vector2d(u, 239), Eigen::Vector2d(0, v),
-                                       Eigen::Vector2d(319, v)}) {
+      for (const Eigen::Vector2d& p :
+           {Eigen::Vector2d(u, 0), Eigen::Vector2d(u, 239), Eigen::Vector2d(0, v), Eigen::Vector2d(319, v)}) {
         const Eigen::Vector2d q = UndistortedPixel(original, undistorted, p);
         EXPECT_TRUE(InsideCentres(q, undistorted, 1e-6)) << p.transpose() << " -> " << q.transpose();
         outermost = std::max({outermost, std::abs(q.x() - 159.5) / 159.5, std::abs(q.y() - 119.5) / 119.5});

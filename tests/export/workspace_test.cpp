@@ -43,13 +43,15 @@ TEST(PointColors, AreTheMeanOverTheObservingImages) {
   // Repaint every image in one colour so that the expected mean is exact.
   const cv::Vec3b colors[3] = {{10, 100, 250}, {20, 101, 200}, {31, 103, 0}};  // BGR
   for (IndexT v = 0; v < 3; ++v) {
-    cv::imwrite((dir / "images" / data.views[v].filename).string(), cv::Mat(120, 160, CV_8UC3, cv::Scalar(colors[v])));
+    cv::imwrite((dir / "images" / data.views[v].filename).string(),
+                cv::Mat(120, 160, CV_8UC3, cv::Scalar(colors[v])));
   }
   // Landmark 0 is seen by views 0 and 2 only; landmark 1 has one observation outside its image.
   data.structure[0].observations.erase(1);
   data.structure[1].observations[2].x = {-3.0, 40.0};
   ColorLandmarksFromImages(&data, dir / "images", 2);
-  EXPECT_EQ(data.structure[0].color, (std::array<uint8_t, 3>{125, 102, 21}));  // (250+0)/2, (100+103)/2 = 101.5
+  EXPECT_EQ(data.structure[0].color,
+            (std::array<uint8_t, 3>{125, 102, 21}));  // (250+0)/2, (100+103)/2 = 101.5
   EXPECT_EQ(data.structure[1].color, (std::array<uint8_t, 3>{225, 101, 15}));
   EXPECT_EQ(data.structure[5].color, (std::array<uint8_t, 3>{150, 101, 20}));  // 450/3, 304/3, 61/3
 }
@@ -67,8 +69,8 @@ TEST(PointColors, MissingOrBrokenImagesGiveOneLineErrors) {
 
 // Mean absolute difference between an image and the scene rendered through `camera` with the
 // pose of `view_id`, over the pixels more than `margin` from the border.
-double MeanDifferenceToRendering(const cv::Mat& image, const SfmData& data, IndexT view_id, const CameraIntrinsics& camera,
-                                 int margin) {
+double MeanDifferenceToRendering(const cv::Mat& image, const SfmData& data, IndexT view_id,
+                                 const CameraIntrinsics& camera, int margin) {
   SfmData pinhole = data;
   pinhole.intrinsics[data.views.at(view_id).id_intrinsic] = camera;
   const cv::Mat expected = testing::RenderView(pinhole, view_id);
@@ -76,7 +78,8 @@ double MeanDifferenceToRendering(const cv::Mat& image, const SfmData& data, Inde
   int count = 0;
   for (int v = margin; v < image.rows - margin; ++v) {
     for (int u = margin; u < image.cols - margin; ++u) {
-      for (int c = 0; c < 3; ++c) sum += std::abs(image.at<cv::Vec3b>(v, u)[c] - expected.at<cv::Vec3b>(v, u)[c]);
+      for (int c = 0; c < 3; ++c)
+        sum += std::abs(image.at<cv::Vec3b>(v, u)[c] - expected.at<cv::Vec3b>(v, u)[c]);
       count += 3;
     }
   }
@@ -90,8 +93,8 @@ TEST(ColmapUndistortedWorkspace, HoldsPinholeCamerasConsistentImagesAndStereoCon
   options.images.num_threads = 2;
   WriteColmapUndistortedWorkspace(data, dir / "images", dir / "workspace", options);
   const fs::path workspace = dir / "workspace";
-  for (const char* file : {"sparse/cameras.bin", "sparse/images.bin", "sparse/points3D.bin", "stereo/patch-match.cfg",
-                           "stereo/fusion.cfg", "run-colmap-geometric.sh"}) {
+  for (const char* file : {"sparse/cameras.bin", "sparse/images.bin", "sparse/points3D.bin",
+                           "stereo/patch-match.cfg", "stereo/fusion.cfg", "run-colmap-geometric.sh"}) {
     EXPECT_TRUE(fs::is_regular_file(workspace / file)) << file;
   }
   for (const char* folder : {"stereo/depth_maps", "stereo/normal_maps", "stereo/consistency_graphs"}) {
@@ -117,7 +120,8 @@ TEST(ColmapUndistortedWorkspace, HoldsPinholeCamerasConsistentImagesAndStereoCon
   double worst = 0;
   for (const auto& [id, landmark] : model.structure) {
     for (const auto& [view_id, observation] : landmark.observations) {
-      const Eigen::Vector2d projected = camera.Project(model.PoseOf(model.views.at(view_id)).ToCamera(landmark.X));
+      const Eigen::Vector2d projected =
+          camera.Project(model.PoseOf(model.views.at(view_id)).ToCamera(landmark.X));
       worst = std::max(worst, (projected - observation.x).norm());
     }
   }
@@ -150,8 +154,10 @@ TEST(ColmapUndistortedWorkspace, ImagesOfTheWrongSizeAreReported) {
   const fs::path dir = testing::ScratchDir("colmap_workspace_size");
   const SfmData data = testing::MakeRenderedScene(DistortedCamera(), dir / "images");
   cv::imwrite((dir / "images" / "view2.png").string(), cv::Mat(100, 160, CV_8UC3, cv::Scalar::all(9)));
-  const std::string message = ErrorOf([&] { WriteColmapUndistortedWorkspace(data, dir / "images", dir / "workspace"); });
-  EXPECT_EQ(message, (dir / "images" / "view2.png").string() + ": image is 160x100 but its camera is 160x120");
+  const std::string message =
+      ErrorOf([&] { WriteColmapUndistortedWorkspace(data, dir / "images", dir / "workspace"); });
+  EXPECT_EQ(message,
+            (dir / "images" / "view2.png").string() + ": image is 160x100 but its camera is 160x120");
   EXPECT_FALSE(fs::exists(dir / "workspace"));  // nothing half-written
 }
 
@@ -256,7 +262,8 @@ TEST(ColmapUndistortedWorkspace, SphericalViewsBecomeCubeFaces) {
     double sum = 0;
     for (int v = 0; v < 64; ++v) {
       for (int u = 0; u < 64; ++u) {
-        for (int c = 0; c < 3; ++c) sum += std::abs(image.at<cv::Vec3b>(v, u)[c] - expected.at<cv::Vec3b>(v, u)[c]);
+        for (int c = 0; c < 3; ++c)
+          sum += std::abs(image.at<cv::Vec3b>(v, u)[c] - expected.at<cv::Vec3b>(v, u)[c]);
       }
     }
     EXPECT_LT(sum / (64 * 64 * 3), 3.0);

@@ -23,8 +23,8 @@ namespace fs = std::filesystem;
 const fs::path kColmapBinary = "/usr/bin/colmap";
 
 int RunColmapTool(const std::string& arguments, const fs::path& log) {
-  const std::string command =
-      "QT_QPA_PLATFORM=offscreen " + kColmapBinary.string() + " " + arguments + " > " + log.string() + " 2>&1";
+  const std::string command = "QT_QPA_PLATFORM=offscreen " + kColmapBinary.string() + " " + arguments +
+                              " > " + log.string() + " 2>&1";
   return std::system(command.c_str());
 }
 
@@ -36,7 +36,8 @@ double MeanDifferenceAlongRays(const cv::Mat& image, const CameraIntrinsics& cam
   cv::Mat map_x(image.rows, image.cols, CV_32FC1), map_y(image.rows, image.cols, CV_32FC1);
   for (int v = 0; v < image.rows; ++v) {
     for (int u = 0; u < image.cols; ++u) {
-      const Eigen::Vector2d x = other_camera.NormalizedToPixel(camera.PixelToNormalized(Eigen::Vector2d(u, v)));
+      const Eigen::Vector2d x =
+          other_camera.NormalizedToPixel(camera.PixelToNormalized(Eigen::Vector2d(u, v)));
       map_x.at<float>(v, u) = static_cast<float>(x.x());
       map_y.at<float>(v, u) = static_cast<float>(x.y());
     }
@@ -49,7 +50,8 @@ double MeanDifferenceAlongRays(const cv::Mat& image, const CameraIntrinsics& cam
     for (int u = margin; u < image.cols - margin; ++u) {
       const float sx = map_x.at<float>(v, u), sy = map_y.at<float>(v, u);
       if (sx < 0 || sy < 0 || sx > other.cols - 1 || sy > other.rows - 1) continue;  // outside the other view
-      for (int c = 0; c < 3; ++c) sum += std::abs(image.at<cv::Vec3b>(v, u)[c] - resampled.at<cv::Vec3b>(v, u)[c]);
+      for (int c = 0; c < 3; ++c)
+        sum += std::abs(image.at<cv::Vec3b>(v, u)[c] - resampled.at<cv::Vec3b>(v, u)[c]);
       count += 3;
     }
   }
@@ -60,11 +62,13 @@ TEST(ColmapWorkspaceInterop, ColmapAcceptsOurUndistortedWorkspaceAndAgreesWithIt
   if (!fs::exists(kColmapBinary)) GTEST_SKIP() << "COLMAP not installed at " << kColmapBinary;
   const fs::path dir = testing::ScratchDir("interop_workspace");
   // COLMAP's RADIAL camera (f, cx, cy, k1, k2): barrel distortion a real lens would have.
-  const CameraIntrinsics distorted(CameraModel::kPinholeRadialK3, 320, 240, {280.0, 161.5, 118.0, -0.22, 0.06, 0.0});
+  const CameraIntrinsics distorted(CameraModel::kPinholeRadialK3, 320, 240,
+                                   {280.0, 161.5, 118.0, -0.22, 0.06, 0.0});
   const SfmData data = testing::MakeRenderedScene(distorted, dir / "images");
 
   WriteColmapUndistortedWorkspace(data, dir / "images", dir / "ours");
-  ASSERT_EQ(RunColmapTool("model_analyzer --path " + (dir / "ours" / "sparse").string(), dir / "analyzer.log"), 0)
+  ASSERT_EQ(
+      RunColmapTool("model_analyzer --path " + (dir / "ours" / "sparse").string(), dir / "analyzer.log"), 0)
       << ReadFileToString(dir / "analyzer.log");
   const std::string analysis = ReadFileToString(dir / "analyzer.log");
   EXPECT_NE(analysis.find("Cameras: 1"), std::string::npos) << analysis;
@@ -81,13 +85,15 @@ TEST(ColmapWorkspaceInterop, ColmapAcceptsOurUndistortedWorkspaceAndAgreesWithIt
             0)
       << ReadFileToString(dir / "undistorter.log");
   // The same layout and the same stereo configuration files, byte for byte.
-  for (const char* file : {"sparse/cameras.bin", "sparse/images.bin", "sparse/points3D.bin", "stereo/patch-match.cfg",
-                           "stereo/fusion.cfg"}) {
+  for (const char* file : {"sparse/cameras.bin", "sparse/images.bin", "sparse/points3D.bin",
+                           "stereo/patch-match.cfg", "stereo/fusion.cfg"}) {
     EXPECT_TRUE(fs::is_regular_file(dir / "colmap" / file)) << file;
     EXPECT_TRUE(fs::is_regular_file(dir / "ours" / file)) << file;
   }
-  EXPECT_EQ(ReadFileToString(dir / "ours/stereo/patch-match.cfg"), ReadFileToString(dir / "colmap/stereo/patch-match.cfg"));
-  EXPECT_EQ(ReadFileToString(dir / "ours/stereo/fusion.cfg"), ReadFileToString(dir / "colmap/stereo/fusion.cfg"));
+  EXPECT_EQ(ReadFileToString(dir / "ours/stereo/patch-match.cfg"),
+            ReadFileToString(dir / "colmap/stereo/patch-match.cfg"));
+  EXPECT_EQ(ReadFileToString(dir / "ours/stereo/fusion.cfg"),
+            ReadFileToString(dir / "colmap/stereo/fusion.cfg"));
 
   const SfmData ours = ReadColmapModel(dir / "ours" / "sparse");
   const SfmData theirs = ReadColmapModel(dir / "colmap" / "sparse");
@@ -113,14 +119,15 @@ TEST(ColmapWorkspaceInterop, ColmapAcceptsOurUndistortedWorkspaceAndAgreesWithIt
     SCOPED_TRACE(view.filename);
     const cv::Mat our_image = ReadColorImage(dir / "ours" / "images" / view.filename);
     const cv::Mat their_image = ReadColorImage(dir / "colmap" / "images" / view.filename);
-    const double ours_vs_colmap = MeanDifferenceAlongRays(our_image, our_camera, their_image, their_camera, 2);
+    const double ours_vs_colmap =
+        MeanDifferenceAlongRays(our_image, our_camera, their_image, their_camera, 2);
     SfmData truth = data;
     truth.intrinsics[0] = our_camera;
-    const double ours_vs_truth = MeanDifferenceAlongRays(our_image, our_camera, testing::RenderView(truth, view_id),
-                                                         our_camera, 0);
+    const double ours_vs_truth =
+        MeanDifferenceAlongRays(our_image, our_camera, testing::RenderView(truth, view_id), our_camera, 0);
     truth.intrinsics[0] = their_camera;
-    const double colmap_vs_truth = MeanDifferenceAlongRays(their_image, their_camera,
-                                                           testing::RenderView(truth, view_id), their_camera, 0);
+    const double colmap_vs_truth = MeanDifferenceAlongRays(
+        their_image, their_camera, testing::RenderView(truth, view_id), their_camera, 0);
     std::printf("%s: ours vs COLMAP %.2f, ours vs truth %.2f, COLMAP vs truth %.2f grey levels\n",
                 view.filename.c_str(), ours_vs_colmap, ours_vs_truth, colmap_vs_truth);
     EXPECT_LT(ours_vs_colmap, 2.0);

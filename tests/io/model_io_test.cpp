@@ -30,6 +30,8 @@ TEST(ModelIo, DetectsFormatFromPath) {
   EXPECT_EQ(DetectModelFormat(dir / "gt_cameras.txt"), ModelFormat::kGroundTruthCameras);
   Touch(dir / "cloud.ply");
   EXPECT_EQ(DetectModelFormat(dir / "cloud.ply"), ModelFormat::kPly);
+  Touch(dir / "scene.mvs");
+  EXPECT_EQ(DetectModelFormat(dir / "scene.mvs"), ModelFormat::kOpenMvsScene);
 }
 
 TEST(ModelIo, OutputFormatFollowsThePath) {
@@ -37,6 +39,7 @@ TEST(ModelIo, OutputFormatFollowsThePath) {
   EXPECT_EQ(OutputModelFormat("out/sfm_data.bin"), ModelFormat::kSfmData);
   EXPECT_EQ(OutputModelFormat("out/points.ply"), ModelFormat::kPly);
   EXPECT_EQ(OutputModelFormat("out/gt_cameras.txt"), ModelFormat::kGroundTruthCameras);
+  EXPECT_EQ(OutputModelFormat("out/scene.mvs"), ModelFormat::kOpenMvsScene);
   EXPECT_EQ(OutputModelFormat("out/sparse/0"), ModelFormat::kColmapModel);
 }
 
@@ -60,6 +63,28 @@ TEST(ModelIo, ReadsGroundTruthCameras) {
   const SfmData data = ReadModel(path);
   ASSERT_EQ(data.poses.size(), 1u);
   EXPECT_EQ(data.poses.at(0).center, Eigen::Vector3d(0, 0, -1));
+}
+
+// An OpenMVS scene reads as a model whose root path is the scene's folder (OpenMVS resolves image
+// names against it), and writes back with the same cameras and poses.
+TEST(ModelIo, ReadsAndWritesOpenMvsScenes) {
+  PRUNESFM_REQUIRE_SHARED("formats/openmvs/scene.mvs", sample);
+  const SfmData data = ReadModel(sample);
+  EXPECT_EQ(data.root_path, sample.parent_path().string());
+  EXPECT_EQ(data.PosedViewIds().size(), 11u);
+  EXPECT_EQ(data.views.at(0).RelativeImagePath(), "images/00000.jpg");
+  const fs::path out = testing::ScratchDir("model_io_mvs") / "copy.mvs";
+  SfmData relative = data;
+  relative.root_path.clear();  // image names stay relative
+  WriteModel(relative, out);
+  const SfmData back = ReadModel(out);
+  EXPECT_EQ(back.views.at(0).RelativeImagePath(), "images/00000.jpg");
+  EXPECT_EQ(back.intrinsics, data.intrinsics);
+  for (const auto& [id, pose] : data.poses) {
+    EXPECT_EQ(back.poses.at(id).rotation, pose.rotation);
+    EXPECT_EQ(back.poses.at(id).center, pose.center);
+  }
+  EXPECT_EQ(back.structure.size(), data.structure.size());
 }
 
 }  // namespace

@@ -108,8 +108,8 @@ TEST(OpenMvsScene, SampleConvertsToAModelWithTheSamePoses) {
   const SfmData data = SfmDataFromOpenMvsScene(scene, sample.string());
   ASSERT_EQ(data.PosedViewIds().size(), 11u);
   ASSERT_EQ(data.intrinsics.size(), 1u);
-  EXPECT_EQ(data.intrinsics.at(0), CameraIntrinsics::Pinhole(2832, 2128, 2985.3283429154812, 1452.1358632578272,
-                                                             1125.0339388744535));
+  EXPECT_EQ(data.intrinsics.at(0), CameraIntrinsics::Pinhole(2832, 2128, 2985.3283429154812,
+                                                             1452.1358632578272, 1125.0339388744535));
   EXPECT_EQ(data.views.at(3).filename, "00003.jpg");
   EXPECT_EQ(data.views.at(3).local_path, "images");
   EXPECT_EQ(data.poses.at(10).center, scene.platforms[0].poses[10].C);
@@ -376,8 +376,9 @@ SfmData UndistortedModel() {
     view.height = v < 2 ? 480 : 600;
     data.views[v] = view;
     if (v < 3) {
-      data.poses[v] = Pose(Eigen::AngleAxisd(0.2 * v, Eigen::Vector3d(0, 1, 0.1).normalized()).toRotationMatrix(),
-                           Eigen::Vector3d(0.5 * v, 0.1, -4.0));
+      data.poses[v] =
+          Pose(Eigen::AngleAxisd(0.2 * v, Eigen::Vector3d(0, 1, 0.1).normalized()).toRotationMatrix(),
+               Eigen::Vector3d(0.5 * v, 0.1, -4.0));
     }
   }
   for (IndexT k = 0; k < 5; ++k) {
@@ -390,7 +391,8 @@ SfmData UndistortedModel() {
         landmark.observations[v] = {Eigen::Vector2d(1, 1), k};
         continue;
       }
-      landmark.observations[v] = {data.intrinsics.at(data.views[v].id_intrinsic).Project(data.poses[v].ToCamera(landmark.X)), k};
+      landmark.observations[v] = {
+          data.intrinsics.at(data.views[v].id_intrinsic).Project(data.poses[v].ToCamera(landmark.X)), k};
     }
     data.structure[10 + k] = landmark;
   }
@@ -436,12 +438,14 @@ TEST(OpenMvsScene, ExportedModelReadsBackWithTheSameCamerasAndPoses) {
 
 TEST(OpenMvsScene, ExportRefusesDistortedCameras) {
   SfmData data = UndistortedModel();
-  data.intrinsics[3] = CameraIntrinsics(CameraModel::kPinholeRadialK1, 640, 480, {500.0, 320.25, 241.5, -0.1});
+  data.intrinsics[3] =
+      CameraIntrinsics(CameraModel::kPinholeRadialK1, 640, 480, {500.0, 320.25, 241.5, -0.1});
   try {
     OpenMvsSceneFromSfmData(data, "images");
     FAIL() << "no error";
   } catch (const Error& e) {
-    EXPECT_NE(std::string(e.what()).find("pinhole_radial_k1 camera with distortion"), std::string::npos) << e.what();
+    EXPECT_NE(std::string(e.what()).find("pinhole_radial_k1 camera with distortion"), std::string::npos)
+        << e.what();
   }
 }
 

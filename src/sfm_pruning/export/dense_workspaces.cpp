@@ -51,8 +51,9 @@ void WriteDenseScript(const fs::path& path) {
 
 }  // namespace
 
-void WriteColmapUndistortedWorkspace(const SfmData& data, const fs::path& image_root, const fs::path& output_dir,
-                                     const DenseWorkspaceOptions& options, const ProgressCallback& progress) {
+void WriteColmapUndistortedWorkspace(const SfmData& data, const fs::path& image_root,
+                                     const fs::path& output_dir, const DenseWorkspaceOptions& options,
+                                     const ProgressCallback& progress) {
   const UndistortedModel undistorted = UndistortModel(data, options.undistort);
   WriteDirectoryAtomically(output_dir, [&](const fs::path& dir) {
     WriteUndistortedImages(data, undistorted, image_root, dir / "images", options.images, progress);

@@ -29,7 +29,8 @@ struct DenseWorkspaceOptions {
 //   run-colmap-geometric.sh       the dense commands, for reference
 void WriteColmapUndistortedWorkspace(const SfmData& data, const std::filesystem::path& image_root,
                                      const std::filesystem::path& output_dir,
-                                     const DenseWorkspaceOptions& options = {}, const ProgressCallback& progress = {});
+                                     const DenseWorkspaceOptions& options = {},
+                                     const ProgressCallback& progress = {});
 
 // An OpenMVS workspace: output_dir/scene.mvs naming images/<image path> (relative to the scene
 // file, as OpenMVS resolves them) and the undistorted images there. Landmark colours become the

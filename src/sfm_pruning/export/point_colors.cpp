@@ -70,7 +70,9 @@ void ColorLandmarksFromImages(SfmData* data, const std::filesystem::path& image_
   }
   for (const auto& [landmark_id, sum_count] : sums) {
     const Eigen::Vector3d bgr = sum_count.first / sum_count.second;
-    const auto channel = [&](int c) { return static_cast<uint8_t>(std::clamp(std::lround(bgr[c]), 0L, 255L)); };
+    const auto channel = [&](int c) {
+      return static_cast<uint8_t>(std::clamp(std::lround(bgr[c]), 0L, 255L));
+    };
     data->structure.at(landmark_id).color = {channel(2), channel(1), channel(0)};
   }
 }

@@ -81,12 +81,15 @@ void SplitSphericalViews(const SfmData& original, UndistortedModel* model) {
 UndistortedModel UndistortModel(const SfmData& data, const UndistortOptions& options) {
   UndistortedModel model;
   model.data = data;
-  for (auto& [id, intrinsics] : model.data.intrinsics) intrinsics = UndistortedIntrinsics(intrinsics, options);
-  for (const auto& [view_id, view] : data.views) model.sources[view_id] = {view_id, -1, Eigen::Matrix3d::Identity()};
+  for (auto& [id, intrinsics] : model.data.intrinsics)
+    intrinsics = UndistortedIntrinsics(intrinsics, options);
+  for (const auto& [view_id, view] : data.views)
+    model.sources[view_id] = {view_id, -1, Eigen::Matrix3d::Identity()};
   for (auto& [landmark_id, landmark] : model.data.structure) {
     for (auto& [view_id, observation] : landmark.observations) {
       const View& view = data.views.at(view_id);
-      if (data.intrinsics.count(view.id_intrinsic) == 0 || !IsPinholeFamily(data.IntrinsicsOf(view).model())) continue;
+      if (data.intrinsics.count(view.id_intrinsic) == 0 || !IsPinholeFamily(data.IntrinsicsOf(view).model()))
+        continue;
       observation.x = UndistortedPixel(data.IntrinsicsOf(view), model.data.IntrinsicsOf(view), observation.x);
     }
   }
@@ -106,9 +109,9 @@ void CopyImage(const fs::path& from, const fs::path& to) {
 
 }  // namespace
 
-void WriteUndistortedImages(const SfmData& original, const UndistortedModel& undistorted, const fs::path& image_root,
-                            const fs::path& output_dir, const ImageWriteOptions& options,
-                            const ProgressCallback& progress) {
+void WriteUndistortedImages(const SfmData& original, const UndistortedModel& undistorted,
+                            const fs::path& image_root, const fs::path& output_dir,
+                            const ImageWriteOptions& options, const ProgressCallback& progress) {
   const std::vector<IndexT> views = undistorted.data.PosedViewIds();
   // One map per (intrinsic, cube face) that needs resampling, computed before the parallel loop.
   using MapKey = std::pair<IndexT, int>;
@@ -120,7 +123,8 @@ void WriteUndistortedImages(const SfmData& original, const UndistortedModel& und
     const CameraIntrinsics& to = undistorted.data.intrinsics.at(intrinsic_id);
     const MapKey key{intrinsic_id, source.cube_face};
     if (maps.count(key) == 0 && (source.cube_face >= 0 || !SameProjection(from, to))) {
-      maps[key] = std::make_shared<const UndistortionMaps>(ComputeUndistortionMaps(from, to, source.rotation));
+      maps[key] =
+          std::make_shared<const UndistortionMaps>(ComputeUndistortionMaps(from, to, source.rotation));
     }
   }
   ParallelFor(
@@ -137,9 +141,11 @@ void WriteUndistortedImages(const SfmData& original, const UndistortedModel& und
         }
         const cv::Mat image = ReadImageAsStored(from);
         const CameraIntrinsics& camera = original.intrinsics.at(view.id_intrinsic);
-        if (image.cols != static_cast<int>(camera.width()) || image.rows != static_cast<int>(camera.height())) {
-          throw FileError(from.string(), "image is " + std::to_string(image.cols) + "x" + std::to_string(image.rows) +
-                                             " but its camera is " + std::to_string(camera.width()) + "x" +
+        if (image.cols != static_cast<int>(camera.width()) ||
+            image.rows != static_cast<int>(camera.height())) {
+          throw FileError(from.string(), "image is " + std::to_string(image.cols) + "x" +
+                                             std::to_string(image.rows) + " but its camera is " +
+                                             std::to_string(camera.width()) + "x" +
                                              std::to_string(camera.height()));
         }
         WriteImage(to, UndistortImage(image, *map->second), options.jpeg_quality);

@@ -46,7 +46,8 @@ BorderExtent MeasureBorder(const CameraIntrinsics& camera) {
                                   : edge == Edge::kTop   ? Eigen::Vector2d(left + t * (right - left), top)
                                                          : Eigen::Vector2d(left + t * (right - left), bottom);
     const Eigen::Vector2d normalized = camera.PixelToNormalized(pixel);
-    if (!normalized.allFinite() || (camera.NormalizedToPixel(normalized) - pixel).norm() > kRoundTripTolerance) {
+    if (!normalized.allFinite() ||
+        (camera.NormalizedToPixel(normalized) - pixel).norm() > kRoundTripTolerance) {
       return;  // outside the domain where the distortion is invertible
     }
     const double x = normalized.x() * camera.FocalX();
@@ -77,22 +78,25 @@ const std::array<Eigen::Matrix3d, kNumCubeFaces>& CubeFaceRotations() {
       R << x.transpose(), y.transpose(), x.cross(y).transpose();
       return R;
     };
-    const Eigen::Vector3d X = Eigen::Vector3d::UnitX(), Y = Eigen::Vector3d::UnitY(), Z = Eigen::Vector3d::UnitZ();
-    return std::array<Eigen::Matrix3d, kNumCubeFaces>{face(X, Y), face(-Z, Y), face(-X, Y), face(Z, Y), face(X, Z),
-                                                      face(X, -Z)};
+    const Eigen::Vector3d X = Eigen::Vector3d::UnitX(), Y = Eigen::Vector3d::UnitY(),
+                          Z = Eigen::Vector3d::UnitZ();
+    return std::array<Eigen::Matrix3d, kNumCubeFaces>{face(X, Y), face(-Z, Y), face(-X, Y),
+                                                      face(Z, Y), face(X, Z),  face(X, -Z)};
   }();
   return rotations;
 }
 
 const std::array<std::string, kNumCubeFaces>& CubeFaceNames() {
-  static const std::array<std::string, kNumCubeFaces> names = {"front", "right", "back", "left", "up", "down"};
+  static const std::array<std::string, kNumCubeFaces> names = {"front", "right", "back",
+                                                               "left",  "up",    "down"};
   return names;
 }
 
 int CubeFaceOf(const Eigen::Vector3d& bearing) {
   int best = 0;
   for (int face = 1; face < kNumCubeFaces; ++face) {
-    if (CubeFaceRotations()[face].row(2).dot(bearing) > CubeFaceRotations()[best].row(2).dot(bearing)) best = face;
+    if (CubeFaceRotations()[face].row(2).dot(bearing) > CubeFaceRotations()[best].row(2).dot(bearing))
+      best = face;
   }
   return best;
 }
@@ -139,9 +143,9 @@ CameraIntrinsics UndistortedIntrinsics(const CameraIntrinsics& camera, const Und
 }
 
 bool SameProjection(const CameraIntrinsics& a, const CameraIntrinsics& b) {
-  return IsPinholeFamily(a.model()) && IsPinholeFamily(b.model()) && !a.HasDistortion() && !b.HasDistortion() &&
-         a.width() == b.width() && a.height() == b.height() && a.FocalX() == b.FocalX() &&
-         a.FocalY() == b.FocalY() && a.PrincipalPoint() == b.PrincipalPoint();
+  return IsPinholeFamily(a.model()) && IsPinholeFamily(b.model()) && !a.HasDistortion() &&
+         !b.HasDistortion() && a.width() == b.width() && a.height() == b.height() &&
+         a.FocalX() == b.FocalX() && a.FocalY() == b.FocalY() && a.PrincipalPoint() == b.PrincipalPoint();
 }
 
 Eigen::Vector2d DistortedPixel(const CameraIntrinsics& original, const CameraIntrinsics& undistorted,
@@ -154,7 +158,8 @@ Eigen::Vector2d UndistortedPixel(const CameraIntrinsics& original, const CameraI
   return undistorted.NormalizedToPixel(original.PixelToNormalized(distorted_pixel));
 }
 
-UndistortionMaps ComputeUndistortionMaps(const CameraIntrinsics& original, const CameraIntrinsics& undistorted,
+UndistortionMaps ComputeUndistortionMaps(const CameraIntrinsics& original,
+                                         const CameraIntrinsics& undistorted,
                                          const Eigen::Matrix3d& rotation) {
   const int width = static_cast<int>(undistorted.width());
   const int height = static_cast<int>(undistorted.height());
@@ -182,7 +187,8 @@ UndistortionMaps ComputeUndistortionMaps(const CameraIntrinsics& original, const
 
 cv::Mat UndistortImage(const cv::Mat& image, const UndistortionMaps& maps) {
   cv::Mat undistorted;
-  cv::remap(image, undistorted, maps.map_x, maps.map_y, cv::INTER_LINEAR, cv::BORDER_CONSTANT, cv::Scalar::all(0));
+  cv::remap(image, undistorted, maps.map_x, maps.map_y, cv::INTER_LINEAR, cv::BORDER_CONSTANT,
+            cv::Scalar::all(0));
   return undistorted;
 }
 

@@ -65,7 +65,8 @@ struct UndistortionMaps {
   cv::Mat map_x;  // CV_32FC1
   cv::Mat map_y;  // CV_32FC1
 };
-UndistortionMaps ComputeUndistortionMaps(const CameraIntrinsics& original, const CameraIntrinsics& undistorted,
+UndistortionMaps ComputeUndistortionMaps(const CameraIntrinsics& original,
+                                         const CameraIntrinsics& undistorted,
                                          const Eigen::Matrix3d& rotation = Eigen::Matrix3d::Identity());
 
 // Resamples `image` (any depth and channel count OpenCV's remap takes) bilinearly; pixels whose

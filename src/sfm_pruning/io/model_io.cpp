@@ -42,7 +42,8 @@ ModelFormat DetectModelFormat(const fs::path& path) {
   if (extension == ".ply") return ModelFormat::kPly;
   if (extension == ".mvs") return ModelFormat::kOpenMvsScene;
   throw FileError(path.string(),
-                  "unknown model format (expected a COLMAP model folder, sfm_data.json/.bin, gt_cameras.txt, .ply or .mvs)");
+                  "unknown model format (expected a COLMAP model folder, sfm_data.json/.bin, gt_cameras.txt, "
+                  ".ply or .mvs)");
 }
 
 ModelFormat OutputModelFormat(const fs::path& path) {

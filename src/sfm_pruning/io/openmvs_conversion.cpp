@@ -27,14 +27,18 @@ std::string JoinImagePath(const std::string& prefix, const std::string& relative
 CameraIntrinsics IntrinsicsFromCamera(const OpenMvsScene::Camera& camera, const std::string& source,
                                       const std::string& name) {
   if (camera.width == 0 || camera.height == 0) {
-    throw Error(source + ": " + name + " has a normalized K without image resolution, which is not supported");
+    throw Error(source + ": " + name +
+                " has a normalized K without image resolution, which is not supported");
   }
   const Eigen::Matrix3d& K = camera.K;
   if (K(0, 1) != 0.0 || K(1, 0) != 0.0 || K(2, 0) != 0.0 || K(2, 1) != 0.0 || K(2, 2) != 1.0) {
-    throw Error(source + ": " + name + " has a K that is not [fx 0 cx; 0 fy cy; 0 0 1] (skew is not supported)");
+    throw Error(source + ": " + name +
+                " has a K that is not [fx 0 cx; 0 fy cy; 0 0 1] (skew is not supported)");
   }
-  if (K(0, 0) == K(1, 1)) return CameraIntrinsics::Pinhole(camera.width, camera.height, K(0, 0), K(0, 2), K(1, 2));
-  return CameraIntrinsics(CameraModel::kPinholeFxFy, camera.width, camera.height, {K(0, 0), K(1, 1), K(0, 2), K(1, 2)});
+  if (K(0, 0) == K(1, 1))
+    return CameraIntrinsics::Pinhole(camera.width, camera.height, K(0, 0), K(0, 2), K(1, 2));
+  return CameraIntrinsics(CameraModel::kPinholeFxFy, camera.width, camera.height,
+                          {K(0, 0), K(1, 1), K(0, 2), K(1, 2)});
 }
 
 // Image ids become view ids when they are all defined and distinct.
@@ -61,7 +65,8 @@ OpenMvsScene OpenMvsSceneFromSfmData(const SfmData& data, const std::string& ima
                   CameraModelName(intrinsics.model()) +
                   " camera with distortion; OpenMVS needs undistorted pinhole images");
     }
-    auto [it, inserted] = platform_of_intrinsic.emplace(view.id_intrinsic, static_cast<uint32_t>(scene.platforms.size()));
+    auto [it, inserted] =
+        platform_of_intrinsic.emplace(view.id_intrinsic, static_cast<uint32_t>(scene.platforms.size()));
     if (inserted) {
       OpenMvsScene::Platform platform;
       platform.name = "platform" + std::to_string(view.id_intrinsic);

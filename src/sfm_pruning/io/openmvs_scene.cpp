@@ -68,9 +68,9 @@ class ArchiveReader {
     uint64_t count = 0;
     Value(count);
     if (count > Remaining() / min_element_bytes) {
-      throw FileError(source_, "corrupt or truncated: " + Where() + " has a count of " + std::to_string(count) +
-                                   " at byte " + std::to_string(count_offset) + ", more than the " +
-                                   std::to_string(Remaining()) + " bytes left can hold");
+      throw FileError(source_, "corrupt or truncated: " + Where() + " has a count of " +
+                                   std::to_string(count) + " at byte " + std::to_string(count_offset) +
+                                   ", more than the " + std::to_string(Remaining()) + " bytes left can hold");
     }
     return count;
   }
@@ -85,7 +85,8 @@ class ArchiveReader {
     return m;
   }
   std::string Where() const {
-    return index_ == kNoIndex ? std::string(section_) : std::string(section_) + "[" + std::to_string(index_) + "]";
+    return index_ == kNoIndex ? std::string(section_)
+                              : std::string(section_) + "[" + std::to_string(index_) + "]";
   }
   void Require(uint64_t n) const {
     if (Remaining() < n) {
@@ -206,7 +207,8 @@ void SerializeScene(Archive& ar, Scene& scene) {
   const uint32_t version = scene.version;
   ar.Array(scene.platforms, kMinPlatformBytes, "platforms", [&](auto& platform) {
     ar.Value(platform.name);
-    ar.Array(platform.cameras, kMinCameraBytes, nullptr, [&](auto& camera) { SerializeCamera(ar, camera, version); });
+    ar.Array(platform.cameras, kMinCameraBytes, nullptr,
+             [&](auto& camera) { SerializeCamera(ar, camera, version); });
     ar.Array(platform.poses, kPoseBytes, nullptr, [&](auto& pose) {
       ar.Value(pose.R);
       ar.Value(pose.C);
@@ -266,12 +268,13 @@ void CheckViews(const std::vector<OpenMvsScene::View>& views, size_t num_images,
                 const std::string& owner) {
   for (size_t k = 0; k < views.size(); ++k) {
     if (views[k].image_id >= num_images) {
-      throw Error(source + ": " + owner + " is seen by image " + std::to_string(views[k].image_id) + " but there are " +
-                  std::to_string(num_images) + " images");
+      throw Error(source + ": " + owner + " is seen by image " + std::to_string(views[k].image_id) +
+                  " but there are " + std::to_string(num_images) + " images");
     }
     if (k > 0 && views[k].image_id <= views[k - 1].image_id) {
-      throw Error(source + ": " + owner + " lists its views out of order (image " + std::to_string(views[k].image_id) +
-                  " after image " + std::to_string(views[k - 1].image_id) + ")");
+      throw Error(source + ": " + owner + " lists its views out of order (image " +
+                  std::to_string(views[k].image_id) + " after image " +
+                  std::to_string(views[k - 1].image_id) + ")");
     }
   }
 }
@@ -279,7 +282,8 @@ void CheckViews(const std::vector<OpenMvsScene::View>& views, size_t num_images,
 void CheckOptionalArray(size_t size, size_t expected, const std::string& source, const std::string& what,
                         const std::string& of) {
   if (size != 0 && size != expected) {
-    throw Error(source + ": " + std::to_string(size) + " " + what + " for " + std::to_string(expected) + " " + of);
+    throw Error(source + ": " + std::to_string(size) + " " + what + " for " + std::to_string(expected) + " " +
+                of);
   }
 }
 
@@ -292,7 +296,8 @@ OpenMvsScene ReadOpenMvsScene(const std::filesystem::path& path) {
   ReadHeader(in, bytes, path, &scene);
   SerializeScene(in, scene);
   if (in.Remaining() != 0) {
-    throw FileError(path.string(), std::to_string(in.Remaining()) + " unexpected bytes after the scene (at byte " +
+    throw FileError(path.string(), std::to_string(in.Remaining()) +
+                                       " unexpected bytes after the scene (at byte " +
                                        std::to_string(in.offset()) + "; corrupt file or a version " +
                                        std::to_string(scene.version) + " header on a newer archive)");
   }
@@ -321,17 +326,19 @@ void ValidateOpenMvsScene(const OpenMvsScene& scene, const std::string& source) 
     const OpenMvsScene::Image& image = scene.images[i];
     const std::string name = "image " + std::to_string(i) + " (" + image.name + ")";
     if (image.platform_id >= scene.platforms.size()) {
-      throw Error(source + ": " + name + " names platform " + std::to_string(image.platform_id) + " but there are " +
-                  std::to_string(scene.platforms.size()) + " platforms");
+      throw Error(source + ": " + name + " names platform " + std::to_string(image.platform_id) +
+                  " but there are " + std::to_string(scene.platforms.size()) + " platforms");
     }
     const OpenMvsScene::Platform& platform = scene.platforms[image.platform_id];
     if (image.camera_id >= platform.cameras.size()) {
-      throw Error(source + ": " + name + " names camera " + std::to_string(image.camera_id) + " but platform " +
-                  std::to_string(image.platform_id) + " has " + std::to_string(platform.cameras.size()) + " cameras");
+      throw Error(source + ": " + name + " names camera " + std::to_string(image.camera_id) +
+                  " but platform " + std::to_string(image.platform_id) + " has " +
+                  std::to_string(platform.cameras.size()) + " cameras");
     }
     if (image.pose_id != kOpenMvsNoId && image.pose_id >= platform.poses.size()) {
       throw Error(source + ": " + name + " names pose " + std::to_string(image.pose_id) + " but platform " +
-                  std::to_string(image.platform_id) + " has " + std::to_string(platform.poses.size()) + " poses");
+                  std::to_string(image.platform_id) + " has " + std::to_string(platform.poses.size()) +
+                  " poses");
     }
   }
   for (size_t i = 0; i < scene.vertices.size(); ++i) {
@@ -340,7 +347,8 @@ void ValidateOpenMvsScene(const OpenMvsScene& scene, const std::string& source) 
   for (size_t i = 0; i < scene.lines.size(); ++i) {
     CheckViews(scene.lines[i].views, scene.images.size(), source, "line " + std::to_string(i));
   }
-  CheckOptionalArray(scene.vertex_normals.size(), scene.vertices.size(), source, "vertex normals", "vertices");
+  CheckOptionalArray(scene.vertex_normals.size(), scene.vertices.size(), source, "vertex normals",
+                     "vertices");
   CheckOptionalArray(scene.vertex_colors.size(), scene.vertices.size(), source, "vertex colours", "vertices");
   CheckOptionalArray(scene.line_normals.size(), scene.lines.size(), source, "line normals", "lines");
   CheckOptionalArray(scene.line_colors.size(), scene.lines.size(), source, "line colours", "lines");

@@ -96,11 +96,11 @@ struct OpenMvsScene {
   std::vector<Platform> platforms;
   std::vector<Image> images;
   std::vector<Vertex> vertices;
-  std::vector<Eigen::Vector3f> vertex_normals;  // empty or one per vertex
-  std::vector<ColorBgr> vertex_colors;          // empty or one per vertex
-  std::vector<Line> lines;                      // version >= 1
-  std::vector<Eigen::Vector3f> line_normals;    // version >= 1
-  std::vector<ColorBgr> line_colors;            // version >= 1
+  std::vector<Eigen::Vector3f> vertex_normals;              // empty or one per vertex
+  std::vector<ColorBgr> vertex_colors;                      // empty or one per vertex
+  std::vector<Line> lines;                                  // version >= 1
+  std::vector<Eigen::Vector3f> line_normals;                // version >= 1
+  std::vector<ColorBgr> line_colors;                        // version >= 1
   Eigen::Matrix4d transform = Eigen::Matrix4d::Identity();  // version >= 2
   BoundingBox bounding_box;                                 // version >= 6
 };

@@ -50,9 +50,11 @@ void RunExport(const ExportArguments& args) {
   sfm_pruning::SfmData data = sfm_pruning::ReadModel(args.model);
   const std::string image_root = args.images.empty() ? data.root_path : args.images;
   if (image_root.empty() && NeedsImages(args.format)) {
-    throw Error(args.model + ": --format " + args.format + " needs the images; give --images (the model names no image folder)");
+    throw Error(args.model + ": --format " + args.format +
+                " needs the images; give --images (the model names no image folder)");
   }
-  if (!image_root.empty() && !fs::is_directory(image_root)) throw Error(image_root + ": image folder does not exist");
+  if (!image_root.empty() && !fs::is_directory(image_root))
+    throw Error(image_root + ": image folder does not exist");
   if (args.format == "ply") RequireExtension(args, {".ply"});
   if (args.format == "json") RequireExtension(args, {".json", ".bin"});
   const sfm_pruning::ProgressCallback progress = TerminalProgressBar();
@@ -61,8 +63,8 @@ void RunExport(const ExportArguments& args) {
     data.root_path = image_root;
   }
   sfm_pruning::DenseWorkspaceOptions options;
-  options.undistort.fit =
-      args.keep_all_pixels ? sfm_pruning::UndistortFit::kKeepAllPixels : sfm_pruning::UndistortFit::kNoBlackBorders;
+  options.undistort.fit = args.keep_all_pixels ? sfm_pruning::UndistortFit::kKeepAllPixels
+                                               : sfm_pruning::UndistortFit::kNoBlackBorders;
   options.images.num_threads = args.num_threads;
   options.images.jpeg_quality = args.jpeg_quality;
   if (args.format == "openmvs") {
@@ -118,7 +120,8 @@ void AddExportCommand(CLI::App& app) {
   cmd->add_option("--output_type", args->output_type, "--format colmap: BIN or TXT")
       ->check(CLI::IsMember({"BIN", "TXT"}))
       ->capture_default_str();
-  cmd->add_option("--num_threads", args->num_threads, "Threads for reading and undistorting images (output does not depend on it)")
+  cmd->add_option("--num_threads", args->num_threads,
+                  "Threads for reading and undistorting images (output does not depend on it)")
       ->check(CLI::PositiveNumber)
       ->capture_default_str();
   cmd->callback([args]() { RunExport(*args); });
