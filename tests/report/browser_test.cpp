@@ -24,7 +24,8 @@ struct BrowserRun {
 
 BrowserRun LoadInChromium(const fs::path& page, const fs::path& screenshot, const fs::path& log) {
   // A fresh profile per run: no first-run state, no clash between parallel tests.
-  const std::string command = std::string(kChromium) + " --headless --disable-gpu --no-sandbox --hide-scrollbars" +
+  // A hung browser must not hang the test suite: coreutils' timeout ends it (exit 124).
+  const std::string command = "timeout 120 " + std::string(kChromium) + " --headless --disable-gpu --no-sandbox --hide-scrollbars" +
                               " --user-data-dir=" + (log.parent_path() / "profile").string() +
                               " --window-size=1280,2400 --enable-logging=stderr --v=0 --screenshot=" +
                               screenshot.string() + " file://" + page.string() + " > " + log.string() + " 2>&1";
