@@ -350,12 +350,116 @@ def run_engine(args, prunesfm, engine, work, images):
 
 
 # ----------------------------------------------------------------------------------------------
+# Trajectory pictures (to judge by eye: a folded model doubles back onto itself)
+# ----------------------------------------------------------------------------------------------
+
+def symmetric_eigenvectors(m):
+    """Eigenvectors (columns, by decreasing eigenvalue) of a symmetric 3x3 matrix (Jacobi)."""
+    a = [row[:] for row in m]
+    v = [[1.0 if i == j else 0.0 for j in range(3)] for i in range(3)]
+    for _ in range(50):
+        p, q = max(((0, 1), (0, 2), (1, 2)), key=lambda ij: abs(a[ij[0]][ij[1]]))
+        if abs(a[p][q]) < 1e-15:
+            break
+        theta = 0.5 * math.atan2(2 * a[p][q], a[q][q] - a[p][p])
+        c, s = math.cos(theta), math.sin(theta)
+        for k in range(3):  # a <- J^T a J, v <- v J
+            akp, akq = a[k][p], a[k][q]
+            a[k][p], a[k][q] = c * akp - s * akq, s * akp + c * akq
+        for k in range(3):
+            apk, aqk = a[p][k], a[q][k]
+            a[p][k], a[q][k] = c * apk - s * aqk, s * apk + c * aqk
+        for k in range(3):
+            vkp, vkq = v[k][p], v[k][q]
+            v[k][p], v[k][q] = c * vkp - s * vkq, s * vkp + c * vkq
+    order = sorted(range(3), key=lambda i: -a[i][i])
+    return [[v[k][i] for k in range(3)] for i in order]
+
+
+def model_centres(args, model, out_dir):
+    """Camera centres of a model in capture (name) order, via COLMAP's text export."""
+    txt = Path(out_dir) / "text"
+    if txt.exists():
+        shutil.rmtree(txt)
+    txt.mkdir(parents=True)
+    rb.run_stage("convert", [args.colmap, "model_converter", "--input_path", model, "--output_path", txt,
+                             "--output_type", "TXT"], Path(out_dir) / "convert.log", args.timeout, rb.colmap_env())
+    if not (txt / "images.txt").is_file():
+        return []
+    _, images = read_text_model(txt)
+    return [(name, [-x for x in matvec(transpose(images[name][0]), images[name][1])]) for name in sorted(images)]
+
+
+def trajectory_svg(panels, path):
+    """One panel per model: centres projected on their two principal axes, joined in capture order,
+    coloured from blue (first image) to red (last), every 5th image numbered."""
+    size, pad = 240, 24
+    svg = [f'<svg xmlns="http://www.w3.org/2000/svg" width="{size * len(panels)}" height="{size + 20}" '
+           'font-family="sans-serif" font-size="10">']
+    for k, (title, centres, total) in enumerate(panels):
+        x0 = k * size
+        svg.append(f'<text x="{x0 + size / 2}" y="14" text-anchor="middle">{title}</text>')
+        svg.append(f'<rect x="{x0 + 2}" y="20" width="{size - 4}" height="{size - 4}" fill="none" stroke="#ccc"/>')
+        if len(centres) < 3:
+            svg.append(f'<text x="{x0 + size / 2}" y="{size / 2}" text-anchor="middle">no model</text>')
+            continue
+        pts = [c for _, c in centres]
+        mean = [sum(p[i] for p in pts) / len(pts) for i in range(3)]
+        cov = [[sum((p[i] - mean[i]) * (p[j] - mean[j]) for p in pts) for j in range(3)] for i in range(3)]
+        axes = symmetric_eigenvectors(cov)
+        xy = [(sum((p[i] - mean[i]) * axes[0][i] for i in range(3)), sum((p[i] - mean[i]) * axes[1][i]
+                                                                        for i in range(3))) for p in pts]
+        span = max(max(abs(x) for x, _ in xy), max(abs(y) for _, y in xy)) or 1.0
+        scale = (size / 2 - pad) / span
+        screen = [(x0 + size / 2 + x * scale, 20 + size / 2 - y * scale) for x, y in xy]
+        for a, b in zip(screen, screen[1:]):
+            svg.append(f'<line x1="{a[0]:.1f}" y1="{a[1]:.1f}" x2="{b[0]:.1f}" y2="{b[1]:.1f}" stroke="#999"/>')
+        for idx, ((name, _), (sx, sy)) in enumerate(zip(centres, screen)):
+            frac = idx / max(1, len(centres) - 1)
+            colour = f"rgb({int(255 * frac)},0,{int(255 * (1 - frac))})"
+            svg.append(f'<circle cx="{sx:.1f}" cy="{sy:.1f}" r="3.5" fill="{colour}"/>')
+            number = int(Path(name).stem) if Path(name).stem.isdigit() else idx
+            if number % 5 == 0:
+                svg.append(f'<text x="{sx + 5:.1f}" y="{sy - 4:.1f}">{number}</text>')
+        svg.append(f'<text x="{x0 + 6}" y="{size + 12}">{len(centres)}/{total} registered</text>')
+    svg.append("</svg>")
+    Path(path).parent.mkdir(parents=True, exist_ok=True)
+    Path(path).write_text("\n".join(svg) + "\n")
+
+
+# ----------------------------------------------------------------------------------------------
 # Report
 # ----------------------------------------------------------------------------------------------
 
-def markdown(args, argv, prunesfm, results):
-    L = bs.header_lines("Real ambiguous scenes against a sequential-matching reference (books, street)", argv,
-                        prunesfm, args.colmap)
+def subgraph_pair_rows(report, check):
+    """Per pair of GLOBAL_PRUNED's accepted subgraphs: views, connecting edges, how many of them
+    are doppelganger pairs by the reference check, and what the inter-subgraph RANSAC removed."""
+    dopp = {tuple(p["pair"]) for p in check["doppelganger_pairs"]}
+    accepted = sorted((n for n in report["tree"] if n["accepted_index"] >= 0), key=lambda n: n["accepted_index"])
+    names = {tuple(p["pair"]): p["names"] for p in check["pairs"]}
+    label = {}
+    for p in check["pairs"]:
+        for image_id, name in zip(p["pair"], p["names"]):
+            label[image_id] = Path(name).stem
+    subgraph = {v: n["accepted_index"] for n in accepted for v in n["view_ids"]}
+    removed = {tuple(sorted(e["pair"])) for e in report["removed_edges"]}
+    rows = []
+    for pair in report["subgraph_pairs"]:
+        k1, k2 = pair["k1"], pair["k2"]
+        between = [p for p in names if {subgraph.get(p[0]), subgraph.get(p[1])} == {k1, k2}]
+        rows.append({"k1": k1, "k2": k2, "status": pair["status"], "edges": pair["edges"],
+                     "doppelganger": sum(p in dopp for p in between),
+                     "removed_doppelganger": sum(p in dopp and p in removed for p in between),
+                     "removed_fitting": sum(p not in dopp and p in removed for p in between)})
+    views = {n["accepted_index"]: ",".join(sorted(label.get(v, str(v)) for v in n["view_ids"])) for n in accepted}
+    return rows, views
+
+
+TITLE = "Real ambiguous scenes against a sequential-matching reference (books, street)"
+
+
+def markdown(args, header, results):
+    L = list(header)
     L += [f"No ground truth exists for these scenes (`{args.shared}/datasets/ambiguous`, Yan et al. 2017). "
           "The images are in capture order, so a reconstruction from neighbour-only pairs never matches the "
           "doppelgangers: COLMAP 3.8 `feature_extractor` (one SIMPLE_RADIAL camera; **the EXIF focal of "
@@ -389,6 +493,9 @@ def markdown(args, argv, prunesfm, results):
                  f"| {c['far_pairs_fitting']}/{c['far_pairs']} | {dopp} | {c['max_step_ratio']} "
                  f"| {len(c['merged_far_images'])} |")
     L.append("")
+    L += ["Camera centres of each model in capture order (blue → red; projected on the model's two "
+          "principal axes, each panel in its own frame), to judge by eye: "
+          + ", ".join(f"[{scene}](images/ambiguous_{scene}.svg)" for scene in results) + ".", ""]
     L += ["| scene | engine | registered | AUC@3 | AUC@5 | AUC@10 | removed pairs (doppelganger / fitting) "
           "| stages (s) |", "|---|---|---|---|---|---|---|---|"]
     for scene, r in results.items():
@@ -404,6 +511,29 @@ def markdown(args, argv, prunesfm, results):
             L.append(f"| {scene} | {row['engine']} | {e['registered']}/{r['check']['images']} | "
                      f"{e['auc']['3']:.1f} | {e['auc']['5']:.1f} | {e['auc']['10']:.1f} | {removed} | {stages} |")
     L.append("")
+    for scene in results:
+        report_path = Path(args.work) / scene / "GLOBAL_PRUNED" / "result" / "pruning_report.json"
+        if not report_path.is_file():
+            continue
+        rows, views = subgraph_pair_rows(json.loads(report_path.read_text()), results[scene]["check"])
+        L.append(f"{scene}, GLOBAL_PRUNED's inter-subgraph pruning against the reference check (subgraphs: "
+                 + "; ".join(f"{k} = {{{v}}}" for k, v in views.items()) + "):")
+        L.append("")
+        L += ["| subgraph pair | status | connecting edges | doppelganger among them | removed doppelganger "
+              "| removed fitting |", "|---|---|---|---|---|---|"]
+        for r in rows:
+            L.append(f"| {r['k1']}–{r['k2']} | {r['status']} | {r['edges']} | {r['doppelganger']} "
+                     f"| {r['removed_doppelganger']} | {r['removed_fitting']} |")
+        L.append("")
+        majority = [r for r in rows if r["edges"] and 2 * r["doppelganger"] > r["edges"]]
+        if majority:
+            L.append(f"Subgraph pairs whose connecting edges are mostly doppelganger pairs: "
+                     + ", ".join(f"{r['k1']}–{r['k2']} ({r['doppelganger']}/{r['edges']})" for r in majority)
+                     + ". The inter-subgraph RANSAC keeps the largest mutually consistent set of a pair's edges, "
+                     "so where the wrong edges are the majority and agree with each other (one alike copy "
+                     "seen from many views) they win; only a test across pairs (the relative pose of k1–k3 "
+                     "against k1–k2 composed with k2–k3) could reject them.")
+            L.append("")
     return L
 
 
@@ -418,6 +548,8 @@ def parse_args(argv):
     p.add_argument("--reuse", action="store_true",
                    help="keep the features, matches and reference an earlier run left in --work")
     p.add_argument("--prepare_only", action="store_true", help="features, matching, reference and its check only")
+    p.add_argument("--rewrite_report", action="store_true",
+                   help="run nothing: regenerate the fragment from WORK/results.json and the models in WORK")
     return p.parse_args(argv)
 
 
@@ -426,10 +558,15 @@ def main(argv):
     if not args.colmap:
         sys.exit("ambiguous_bench: needs Debian's colmap on the PATH (or --colmap)")
     prunesfm = rb.find_prunesfm(args.prunesfm)
+    if args.rewrite_report:
+        saved = json.loads((Path(args.work) / "results.json").read_text())
+        bs.write_fragment("ambiguous", markdown(args, saved["header"], saved["scenes"]))
+        return 0
     engines = [e for e in args.engines.split(",") if e]
     for e in engines:
         if e not in ENGINES:
             sys.exit(f"ambiguous_bench: unknown engine {e} (known: {', '.join(ENGINES)})")
+    header = bs.header_lines(TITLE, ["bench/ambiguous_bench.py"] + argv, prunesfm, args.colmap)
     results = {}
     for scene in [s for s in args.scenes.split(",") if s]:
         if scene not in SCENES:
@@ -446,6 +583,7 @@ def main(argv):
               f"{check['far_pairs_fitting']}/{check['far_pairs']}, doppelganger pairs "
               f"{len(check['doppelganger_pairs'])}", flush=True)
         result = {"camera": camera, "prep": prep + ref_stages, "check": check, "engines": []}
+        panels = [("reference (sequential)", model_centres(args, model, work / "reference"), check["images"])]
         if not args.prepare_only:
             for engine in engines:
                 row, estimate = run_engine(args, prunesfm, engine, work, images)
@@ -453,11 +591,13 @@ def main(argv):
                                                   args.timeout)
                 print(f"  {engine}: {row['eval']}", flush=True)
                 result["engines"].append(row)
+                centres = model_centres(args, estimate, work / engine) if estimate is not None else []
+                panels.append((engine, centres, check["images"]))
+            trajectory_svg(panels, rb.REPO / "docs" / "images" / f"ambiguous_{scene}.svg")
         results[scene] = result
-    out = Path(args.work) / "results.json"
-    out.write_text(json.dumps(results, indent=2) + "\n")
     if not args.prepare_only:
-        bs.write_fragment("ambiguous", markdown(args, ["bench/ambiguous_bench.py"] + argv, prunesfm, results))
+        (Path(args.work) / "results.json").write_text(json.dumps({"header": header, "scenes": results}, indent=2) + "\n")
+        bs.write_fragment("ambiguous", markdown(args, header, results))
     return 0
 
 
