@@ -6,6 +6,7 @@
 //       the removed pairs are deleted (everything else byte for byte, the matches table too:
 //       the mappers build their correspondence graph from two_view_geometries only);
 //   --sfm_data S --matches_dir D --output M: the OpenMVG match file without the removed pairs.
+// Cameras with a guessed focal are calibrated on the view graph first (as `run` does by default).
 // Only the edges the pruning removes are dropped; pairs our verification rejects are kept (the
 // input tool accepted them and may judge them differently). Plus the pruning report (JSON).
 #include <CLI/CLI.hpp>
@@ -85,15 +86,27 @@ void RunPrune(const PruneArguments& args) {
   }
   const double read_seconds = clock.Lap();
 
+  // Cameras whose focal is a guess (COLMAP's prior_focal_length = 0) are calibrated on the view
+  // graph first, as `run` does: relative poses verified with a wrong focal mislead the pruning.
+  sfm_pruning::SfmData scene = input.scene;
+  const std::set<sfm_pruning::IndexT> guessed = RefinedIntrinsics(args.settings.intrinsics, input);
+  nlohmann::json calibration;
+  if (!guessed.empty()) {
+    const sfm_pruning::FocalCalibrationReport report = CalibrateFocals(args.settings, input, guessed, &scene);
+    ReportCalibration(report);
+    calibration = CalibrationJson(report);
+  }
+  const double calibration_seconds = clock.Lap();
+
   sfm_pruning::ViewGraphBuildReport build;
-  sfm_pruning::ViewGraph graph = BuildVerifiedViewGraph(args.settings, input, &build);
+  sfm_pruning::ViewGraph graph = BuildVerifiedViewGraph(args.settings, input, &build, &scene);
   const double verify_seconds = clock.Lap();
   Info("view graph: " + std::to_string(graph.NumValidEdges()) + " edges of " + std::to_string(build.num_pairs) +
        " pairs, " + std::to_string(graph.NumNodes()) + " views");
 
   const sfm_pruning::PrunedGlobalEngineOptions options = PrunedEngineOptions(args.settings);
   sfm_pruning::ViewGraphPruningReport pruning;
-  PruneViewGraph(options.pruning, &graph, input.scene, input.features, &pruning, TerminalProgressBar());
+  PruneViewGraph(options.pruning, &graph, scene, input.features, &pruning, TerminalProgressBar());
   const double prune_seconds = clock.Lap();
   Info("pruning: " + PruningSummary(pruning));
 
@@ -125,9 +138,11 @@ void RunPrune(const PruneArguments& args) {
                       {"num_threads", args.settings.num_threads},
                       {"seconds",
                        {{"read input", read_seconds},
+                        {"focal calibration", calibration_seconds},
                         {"verification", verify_seconds},
                         {"pruning", prune_seconds},
                         {"write output", write_seconds}}}};
+  if (!calibration.is_null()) report["filter"]["focal_calibration"] = std::move(calibration);
   WriteJsonAtomically(report, report_path);
   Info("wrote " + output.string() + " (" + std::to_string(num_pairs - removed.size()) + " of " +
        std::to_string(num_pairs) + " pairs kept) and " + report_path.string());

@@ -70,11 +70,8 @@ sfm_pruning::ViewGraph BuildVerifiedViewGraph(const EngineSettings& settings, co
   return graph;
 }
 
-namespace {
-
-// View-graph focal calibration of the refined cameras, into *scene. Verified pairs give their
-// inliers directly; putative matches are verified once with the prior intrinsics first (the
-// caller verifies them again with the calibrated ones).
+// Verified pairs give their inliers directly; putative matches are verified once with the prior
+// intrinsics first (the caller verifies them again with the calibrated ones).
 sfm_pruning::FocalCalibrationReport CalibrateFocals(const EngineSettings& settings, const ReconstructionInput& input,
                                                     const std::set<sfm_pruning::IndexT>& refined,
                                                     sfm_pruning::SfmData* scene) {
@@ -86,6 +83,8 @@ sfm_pruning::FocalCalibrationReport CalibrateFocals(const EngineSettings& settin
   const sfm_pruning::ViewGraph prior_graph = BuildVerifiedViewGraph(settings, input, &prior_build, scene);
   return CalibrateFocalLengths(options, refined, sfm_pruning::InliersOfEdges(prior_graph), input.features, scene);
 }
+
+namespace {
 
 // Verification with the intrinsics of `scene`, then the engine; a failed engine is reported in
 // report.success.

@@ -5,6 +5,7 @@
 
 #include <cstdint>
 #include <filesystem>
+#include <set>
 #include <string>
 
 #include "sfm_pruning/global/view_graph_builder.hpp"
@@ -45,6 +46,12 @@ sfm_pruning::PrunedGlobalEngineOptions PrunedEngineOptions(const EngineSettings&
 sfm_pruning::ViewGraph BuildVerifiedViewGraph(const EngineSettings& settings, const ReconstructionInput& input,
                                               sfm_pruning::ViewGraphBuildReport* report,
                                               const sfm_pruning::SfmData* scene = nullptr);
+
+// View-graph focal calibration (fundamental matrices) of the cameras `refined` into *scene, from
+// the input's verified pairs, or from its matches verified once with the prior intrinsics.
+sfm_pruning::FocalCalibrationReport CalibrateFocals(const EngineSettings& settings, const ReconstructionInput& input,
+                                                    const std::set<sfm_pruning::IndexT>& refined,
+                                                    sfm_pruning::SfmData* scene);
 
 // Verifies (when the input holds putative matches), runs the engine and writes the outputs into
 // `output`. Throws sfm_pruning::Error (one line naming input.source) when there is no edge or
