@@ -78,10 +78,8 @@ def summarize_pruning(report):
                                "seconds": round(n["seconds"], 2), "status": n["status"]} for n in slowest]}
 
 
-def markdown(args, argv, prunesfm, rows):
-    L = bs.header_lines(f"Cost of the pruning: GLOBAL_PRUNED vs GLOBAL on sequential_large@{args.num_views}",
-                        argv, prunesfm)
-    L += [f"`prunesfm synth --scene sequential_large --num_views {args.num_views} --seed {args.seed}` "
+def markdown(args, rows):
+    L = [f"`prunesfm synth --scene sequential_large --num_views {args.num_views} --seed {args.seed}` "
           "(a camera path along a street with repeated facades, two laps, sequential + retrieval-like pairs), "
           f"then `prunesfm run --engine E --num_threads {args.threads}` for GLOBAL and GLOBAL_PRUNED one after "
           "the other on the same database (wall time of the whole run, verification included for both). "
@@ -97,7 +95,10 @@ def markdown(args, argv, prunesfm, rows):
     base = ok.get("GLOBAL", {}).get("seconds")
     for r in rows:
         if r["rc"] != 0:
-            L.append(f"| {r['engine']} | failed: {r.get('error')} |" + " |" * (len(stages) + 4))
+            # A run killed at the timeout still bounds the ratio from below.
+            bound = f"> {r['seconds'] / base:.2f}" if base and "timeout" in (r.get("error") or "") else "–"
+            L.append(f"| {r['engine']} | > {r['seconds']:.0f} ({r.get('error')}) | {bound} | {r['peak_mb']:.0f} |"
+                     + " |" * (len(stages) + 2))
             continue
         ratio = f"{r['seconds'] / base:.2f}" if base else "–"
         e = r["eval"]
@@ -105,6 +106,12 @@ def markdown(args, argv, prunesfm, rows):
         L.append(f"| {r['engine']} | {r['seconds']:.1f} | {ratio} | {r['peak_mb']:.0f} | {e['registered']} | {auc} | "
                  + " | ".join(f"{r['stages'].get(s, 0.0):.1f}" if s in r["stages"] else "–" for s in stages) + " |")
     L.append("")
+    g = ok.get("GLOBAL")
+    if g:
+        total = sum(g["stages"].values()) or 1.0
+        L.append("GLOBAL's time: " + ", ".join(f"{k} {100 * v / total:.0f} %" for k, v in g["stages"].items()
+                                              if v / total >= 0.01) + ".")
+        L.append("")
     p = ok.get("GLOBAL_PRUNED", {}).get("pruning")
     if p:
         L += [f"Where the pruning's time goes: {p['engine_runs']} engine runs over a tree of {p['tree_nodes']} "
@@ -127,6 +134,8 @@ def parse_args(argv):
     p.add_argument("--num_views", type=int, default=1000)
     p.add_argument("--engines", default=",".join(ENGINES))
     p.add_argument("--reuse", action="store_true", help="keep the synthetic scene of an earlier run (same args)")
+    p.add_argument("--fragment", default="pruning_cost", help="name of the fragment in bench/sections/")
+    p.add_argument("--rewrite_report", action="store_true", help="run nothing: regenerate from WORK/results.json")
     return p.parse_args(argv)
 
 
@@ -136,10 +145,16 @@ def main(argv):
     prunesfm = rb.find_prunesfm(args.prunesfm)
     work = Path(args.work).resolve()
     work.mkdir(parents=True, exist_ok=True)
+    if args.rewrite_report:
+        saved = json.loads((work / "results.json").read_text())
+        bs.write_fragment(args.fragment, saved["header"] + markdown(args, saved["rows"]))
+        return 0
+    header = bs.header_lines(f"Cost of the pruning: GLOBAL_PRUNED vs GLOBAL on sequential_large@{args.num_views}",
+                             ["bench/pruning_cost_bench.py"] + argv, prunesfm)
     scene = prepare(args, prunesfm, work)
     rows = [run_engine(args, prunesfm, scene, e, work) for e in args.engines.split(",") if e]
-    (work / "results.json").write_text(json.dumps(rows, indent=2) + "\n")
-    bs.write_fragment("pruning_cost", markdown(args, ["bench/pruning_cost_bench.py"] + argv, prunesfm, rows))
+    (work / "results.json").write_text(json.dumps({"header": header, "rows": rows}, indent=2) + "\n")
+    bs.write_fragment(args.fragment, header + markdown(args, rows))
     return 0
 
 
