@@ -5,28 +5,13 @@
 #include <gtest/gtest.h>
 
 #include "bundle_test_scene.hpp"
-#include "sfm_pruning/global/bundle_observations.hpp"
 
 namespace sfm_pruning {
 namespace {
 
+using bundle_test::InlierRmsPx;
 using bundle_test::Scene;
 using bundle_test::SceneOptions;
-
-// Per-coordinate RMS reprojection error of the observations that are not planted outliers.
-double InlierRmsPx(const SfmData& data, const Scene& scene) {
-  double sum = 0.0;
-  size_t count = 0;
-  for (const auto& [landmark_id, landmark] : data.structure) {
-    for (const PosedObservation& obs : PosedObservationsOf(data, landmark)) {
-      if (scene.outliers.count({landmark_id, obs.view_id})) continue;
-      const double error = ReprojectionErrorPx(obs, landmark.X);
-      sum += error * error;
-      ++count;
-    }
-  }
-  return std::sqrt(sum / (2.0 * count));
-}
 
 double MaxRotationErrorDeg(const SfmData& truth, const SfmData& aligned) {
   double max_error = 0.0;

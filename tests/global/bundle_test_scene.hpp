@@ -13,6 +13,7 @@
 
 #include <Eigen/Geometry>
 
+#include "sfm_pruning/global/bundle_observations.hpp"
 #include "sfm_pruning/sfm/sfm_data.hpp"
 
 namespace sfm_pruning::bundle_test {
@@ -146,6 +147,21 @@ inline void AlignToTruth(const SfmData& truth, SfmData* estimate) {
     pose.rotation = pose.rotation * R.transpose();
   }
   for (auto& [id, landmark] : estimate->structure) landmark.X = sR * landmark.X + T.topRightCorner<3, 1>();
+}
+
+// Per-coordinate RMS reprojection error of the observations that are not planted outliers.
+inline double InlierRmsPx(const SfmData& data, const Scene& scene) {
+  double sum = 0.0;
+  size_t count = 0;
+  for (const auto& [landmark_id, landmark] : data.structure) {
+    for (const PosedObservation& obs : PosedObservationsOf(data, landmark)) {
+      if (scene.outliers.count({landmark_id, obs.view_id})) continue;
+      const double error = ReprojectionErrorPx(obs, landmark.X);
+      sum += error * error;
+      ++count;
+    }
+  }
+  return std::sqrt(sum / (2.0 * count));
 }
 
 }  // namespace sfm_pruning::bundle_test

@@ -51,6 +51,23 @@ TEST(GlobalPositioning, NoiseAndOutliersStayWithinOnePercent) {
   EXPECT_GT(kept.num_inliers_kept, kept.num_inliers * 9 / 10);
 }
 
+TEST(GlobalPositioning, SubsampledSolveTriangulatesTheOtherTracks) {
+  testing::PositioningScene scene = testing::MakePositioningScene({});
+  const std::vector<Track> tracks = TracksOf(scene);
+  GlobalPositioningOptions options;
+  options.subsampling = {60, 4};  // each view sees about 480 tracks
+  const PositioningResult result =
+      PositionCamerasAndPoints(options, scene.rotations, tracks, scene.features, &scene.sfm_data);
+  ASSERT_TRUE(result.success) << result.message;
+  EXPECT_LT(result.num_solved_tracks, tracks.size() / 2);
+  EXPECT_GE(result.num_solved_tracks, 60u);
+  EXPECT_EQ(result.num_positioned_views, scene.true_poses.size());
+  EXPECT_LT(testing::MaxRelativeCenterError(scene.true_poses, scene.sfm_data), 1e-4);
+  // Every track has its point: solved or triangulated from the solved cameras (exact data).
+  EXPECT_EQ(result.num_landmarks, tracks.size());
+  EXPECT_EQ(result.num_filtered_observations, 0u);
+}
+
 TEST(GlobalPositioning, DeterministicForASeed) {
   testing::PositioningSceneOptions options = testing::SmallSceneOptions();
   options.pixel_noise_std = 0.5;

@@ -1,6 +1,7 @@
 #include "sfm_pruning/global/bundle_adjustment.hpp"
 
 #include <algorithm>
+#include <chrono>
 #include <cmath>
 #include <memory>
 #include <vector>
@@ -168,9 +169,7 @@ ceres::Solver::Options MakeSolverOptions(const BundleAdjustmentOptions& options)
   return solver;
 }
 
-}  // namespace
-
-BundleAdjustmentResult AdjustBundle(const BundleAdjustmentOptions& options, SfmData* sfm_data) {
+BundleAdjustmentResult AdjustBundleUntimed(const BundleAdjustmentOptions& options, SfmData* sfm_data) {
   BundleAdjustmentResult result;
   if (sfm_data->PosedViewIds().empty()) {
     result.message = "no posed view: nothing to adjust";
@@ -220,6 +219,15 @@ BundleAdjustmentResult AdjustBundle(const BundleAdjustmentOptions& options, SfmD
   const ErrorSummary final_errors = MeasureErrors(*sfm_data, parameters);
   result.final_rms_px = final_errors.rms_px;
   result.num_observations_behind = final_errors.num_behind;
+  return result;
+}
+
+}  // namespace
+
+BundleAdjustmentResult AdjustBundle(const BundleAdjustmentOptions& options, SfmData* sfm_data) {
+  const auto start = std::chrono::steady_clock::now();
+  BundleAdjustmentResult result = AdjustBundleUntimed(options, sfm_data);
+  result.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   return result;
 }
 

@@ -64,6 +64,7 @@ struct BundleAdjustmentResult {
   double initial_rms_px = 0.0;
   double final_rms_px = 0.0;
   int num_iterations = 0;  // Ceres iterations, successful or not
+  double seconds = 0.0;    // wall time of the whole call (problem construction + solve)
 
   size_t num_poses = 0;
   size_t num_intrinsics = 0;

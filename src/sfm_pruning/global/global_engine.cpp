@@ -93,12 +93,14 @@ bool RunStages(const GlobalEngineOptions& options, const ViewGraph& graph, const
       GlobalPositioningOptions positioning = options.global_positioning;
       positioning.solver.seed = options.seed;
       positioning.solver.num_threads = options.num_threads;
+      positioning.solver.function_tolerance = options.positioning_function_tolerance;
       positioning.solver.progress = progress;
       report->positioning = PositionCamerasAndPoints(positioning, rotations, tracks.tracks, features, out);
     } else {
       TranslationAveragingOptions averaging = options.translation_averaging;
       averaging.solver.seed = options.seed;
       averaging.solver.num_threads = options.num_threads;
+      averaging.solver.function_tolerance = options.positioning_function_tolerance;
       averaging.solver.progress = progress;
       report->positioning =
           PositionCamerasByTranslationAveraging(averaging, kept, rotations, tracks.tracks, features, out).positioning;
@@ -117,7 +119,12 @@ bool RunStages(const GlobalEngineOptions& options, const ViewGraph& graph, const
   Timed("bundle adjustment", report, [&]() {
     for (size_t round = 0; round < num_adjustments && adjusted; ++round) {
       ReportProgress(progress, "bundle adjustment", round, num_adjustments);
-      report->bundle_adjustments.push_back(AdjustBundle(bundle, out));
+      BundleAdjustmentOptions round_options = bundle;
+      round_options.function_tolerance = round + 1 < num_adjustments ? options.intermediate_function_tolerance
+                                                                     : options.final_function_tolerance;
+      report->bundle_adjustments.push_back(
+          round == 0 ? AdjustBundleOnSubset(round_options, options.first_bundle_subsampling, options.retriangulation, out)
+                     : AdjustBundle(round_options, out));
       adjusted = report->bundle_adjustments.back().success;
       if (!adjusted) break;
       const StructureFilteringResult filtered = FilterStructure(options.filtering, out);

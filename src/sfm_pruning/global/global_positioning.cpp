@@ -18,24 +18,34 @@ PositioningResult PositionCamerasAndPoints(const GlobalPositioningOptions& optio
     return result;
   }
 
-  // Unknowns: the cameras (increasing view id, so index 0 is the gauge camera), then the points.
+  // Unknowns: the cameras (increasing view id, so index 0 is the gauge camera), then the points of
+  // the solved tracks. Every camera of `rays` observes a solved track (the subsampling gives each
+  // view at least one).
+  std::vector<SampledTrack> sampled(rays.size());
+  for (size_t t = 0; t < rays.size(); ++t) {
+    for (const PositioningObservation& observation : rays[t].observations) {
+      sampled[t].push_back({observation.view_id, observation.pixel});
+    }
+  }
+  const std::vector<size_t> solved = SelectWellDistributedTracks(sampled, options.subsampling);
+  result.num_solved_tracks = solved.size();
   std::set<IndexT> camera_set;
-  for (const PositioningTrack& track : rays) {
-    for (const PositioningObservation& observation : track.observations) camera_set.insert(observation.view_id);
+  for (const size_t t : solved) {
+    for (const PositioningObservation& observation : rays[t].observations) camera_set.insert(observation.view_id);
   }
   const std::vector<IndexT> cameras(camera_set.begin(), camera_set.end());
   const auto camera_index = [&](IndexT view_id) {
     return static_cast<size_t>(std::lower_bound(cameras.begin(), cameras.end(), view_id) - cameras.begin());
   };
   std::vector<RayConstraint> constraints;
-  for (size_t t = 0; t < rays.size(); ++t) {
-    for (const PositioningObservation& observation : rays[t].observations) {
-      constraints.push_back({camera_index(observation.view_id), cameras.size() + t, observation.ray_world});
+  for (size_t k = 0; k < solved.size(); ++k) {
+    for (const PositioningObservation& observation : rays[solved[k]].observations) {
+      constraints.push_back({camera_index(observation.view_id), cameras.size() + k, observation.ray_world});
     }
   }
 
   std::vector<Eigen::Vector3d> positions;
-  if (!SolveFromRandomStart(options.solver, cameras.size() + rays.size(), constraints, "global_positioning",
+  if (!SolveFromRandomStart(options.solver, cameras.size() + solved.size(), constraints, "global_positioning",
                             &positions, &result)
            .usable) {
     return result;
@@ -43,8 +53,21 @@ PositioningResult PositionCamerasAndPoints(const GlobalPositioningOptions& optio
 
   std::map<IndexT, Eigen::Vector3d> centers;
   for (size_t c = 0; c < cameras.size(); ++c) centers[cameras[c]] = positions[c];
-  std::vector<std::optional<Eigen::Vector3d>> points(positions.begin() + static_cast<std::ptrdiff_t>(cameras.size()),
-                                                     positions.end());
+  std::vector<std::optional<Eigen::Vector3d>> points(rays.size());
+  std::vector<bool> is_solved(rays.size(), false);
+  for (size_t k = 0; k < solved.size(); ++k) {
+    points[solved[k]] = positions[cameras.size() + k];
+    is_solved[solved[k]] = true;
+  }
+  std::vector<PositioningTrack> others;
+  for (size_t t = 0; t < rays.size(); ++t) {
+    if (!is_solved[t]) others.push_back(rays[t]);
+  }
+  const std::vector<std::optional<Eigen::Vector3d>> triangulated =
+      TriangulateTracks(others, rotations, centers, options.max_angular_residual_deg, TriangulationMethod::kDlt);
+  for (size_t t = 0, k = 0; t < rays.size(); ++t) {
+    if (!is_solved[t]) points[t] = triangulated[k++];
+  }
   WritePositionedScene(rotations, centers, rays, points, options.max_angular_residual_deg, sfm_data, &result);
   result.success = true;
   return result;

@@ -20,6 +20,7 @@
 
 #include "sfm_pruning/global/global_positioning_scene.hpp"
 #include "sfm_pruning/global/global_positioning_solver.hpp"
+#include "sfm_pruning/global/track_subsampling.hpp"
 #include "sfm_pruning/global/tracks.hpp"
 #include "sfm_pruning/sfm/features.hpp"
 #include "sfm_pruning/sfm/sfm_data.hpp"
@@ -33,6 +34,11 @@ struct GlobalPositioningOptions {
   // Loose (about 50 px at f = 1000) because the positions are not refined yet: it removes
   // gross outliers and points behind cameras, bundle adjustment does the fine filtering.
   double max_angular_residual_deg = 3.0;
+  // Tracks in the solve: a well-distributed subset per view (track_subsampling.hpp); the points of
+  // the others are triangulated from the solved cameras (TriangulateTracks, DLT), then filtered
+  // like the solved ones. The solve's cost is linear in its observations, and camera centres from
+  // a few hundred tracks per view spread over the image are as accurate as from all of them.
+  TrackSubsamplingOptions subsampling{500, 8};
 };
 
 // Positions every view that has a rotation (world -> camera, keyed by view id), intrinsics, a

@@ -21,6 +21,49 @@ double RayAngularResidualDeg(const PositioningObservation& observation, const Ei
   return RadToDeg(AngleBetweenVectors(observation.ray_world, point - center));
 }
 
+namespace {
+
+// DLT point from the observations of views with a centre; with `reference`, only from those whose
+// ray passes within max_angular_residual_deg of it.
+std::optional<Eigen::Vector3d> TriangulateTrack(const PositioningTrack& track,
+                                                const std::map<IndexT, Eigen::Matrix3d>& rotations,
+                                                const std::map<IndexT, Eigen::Vector3d>& centers,
+                                                double max_angular_residual_deg, TriangulationMethod method,
+                                                const std::optional<Eigen::Vector3d>& reference) {
+  std::vector<Pose> poses;
+  std::vector<Eigen::Vector3d> bearings;
+  for (const PositioningObservation& observation : track.observations) {
+    const auto center = centers.find(observation.view_id);
+    if (center == centers.end()) continue;
+    if (reference && RayAngularResidualDeg(observation, center->second, *reference) > max_angular_residual_deg) {
+      continue;
+    }
+    poses.emplace_back(rotations.at(observation.view_id), center->second);
+    bearings.push_back(observation.bearing);
+  }
+  if (poses.size() < 2) return std::nullopt;
+  return TriangulateMultiView(poses, bearings, method);
+}
+
+}  // namespace
+
+std::vector<std::optional<Eigen::Vector3d>> TriangulateTracks(const std::vector<PositioningTrack>& tracks,
+                                                              const std::map<IndexT, Eigen::Matrix3d>& rotations,
+                                                              const std::map<IndexT, Eigen::Vector3d>& centers,
+                                                              double max_angular_residual_deg,
+                                                              TriangulationMethod method) {
+  std::vector<std::optional<Eigen::Vector3d>> points;
+  points.reserve(tracks.size());
+  for (const PositioningTrack& track : tracks) {
+    const std::optional<Eigen::Vector3d> first =
+        TriangulateTrack(track, rotations, centers, max_angular_residual_deg, method, std::nullopt);
+    const std::optional<Eigen::Vector3d> refined =
+        first ? TriangulateTrack(track, rotations, centers, max_angular_residual_deg, method, first) : std::nullopt;
+    points.push_back(refined ? refined : first);
+  }
+  return points;
+}
+
 void WritePositionedScene(const std::map<IndexT, Eigen::Matrix3d>& rotations,
                           const std::map<IndexT, Eigen::Vector3d>& centers,
                           const std::vector<PositioningTrack>& tracks,

@@ -10,6 +10,7 @@
 
 #include <Eigen/Core>
 
+#include "sfm_pruning/geometry/triangulation.hpp"
 #include "sfm_pruning/global/global_positioning_rays.hpp"
 #include "sfm_pruning/global/global_positioning_solver.hpp"
 #include "sfm_pruning/sfm/sfm_data.hpp"
@@ -28,6 +29,7 @@ struct PositioningResult {
   // Tracks with no landmark: no point, or fewer than two observations left after the filter.
   size_t num_dropped_tracks = 0;
 
+  size_t num_solved_tracks = 0;  // tracks whose points the solver estimated (the rest: triangulated)
   int num_solver_iterations = 0;
   double initial_cost = 0.0;  // solver cost (0.5 * sum of robustified squared residuals)
   double final_cost = 0.0;
@@ -44,6 +46,18 @@ PositioningSolverSummary SolveFromRandomStart(const PositioningSolverOptions& op
 // the point (180 for a point behind the camera, whatever the camera model).
 double RayAngularResidualDeg(const PositioningObservation& observation, const Eigen::Vector3d& center,
                              const Eigen::Vector3d& point);
+
+// One point per track from the cameras: a DLT (`method`) over the observations of views with a
+// centre, then again over only those whose ray passes within max_angular_residual_deg of that
+// first point (a DLT is least squares, so one outlier drags it, and the angular filter would then
+// blame good observations). Empty where fewer than two observations remain or it is degenerate.
+// Used for every track by translation averaging and, by global positioning, for the tracks left
+// out of its solve.
+std::vector<std::optional<Eigen::Vector3d>> TriangulateTracks(const std::vector<PositioningTrack>& tracks,
+                                                              const std::map<IndexT, Eigen::Matrix3d>& rotations,
+                                                              const std::map<IndexT, Eigen::Vector3d>& centers,
+                                                              double max_angular_residual_deg,
+                                                              TriangulationMethod method);
 
 // Replaces sfm_data->poses and sfm_data->structure: one pose (rotation from `rotations`, centre
 // from `centers`) per view of `centers`, under the view's id_pose; one landmark per track with a

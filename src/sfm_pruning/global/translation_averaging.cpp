@@ -39,46 +39,6 @@ DirectionProblem MakeDirectionProblem(const ViewGraph& graph, const std::map<Ind
   return problem;
 }
 
-// DLT point from the observations of positioned views; with `reference`, only from those whose
-// ray passes within max_angular_residual_deg of it. Empty below two observations or degenerate.
-std::optional<Eigen::Vector3d> TriangulateTrack(const PositioningTrack& track,
-                                                const std::map<IndexT, Eigen::Matrix3d>& rotations,
-                                                const std::map<IndexT, Eigen::Vector3d>& centers,
-                                                const TranslationAveragingOptions& options,
-                                                const std::optional<Eigen::Vector3d>& reference) {
-  std::vector<Pose> poses;
-  std::vector<Eigen::Vector3d> bearings;
-  for (const PositioningObservation& observation : track.observations) {
-    const auto center = centers.find(observation.view_id);
-    if (center == centers.end()) continue;
-    if (reference && RayAngularResidualDeg(observation, center->second, *reference) > options.max_angular_residual_deg) {
-      continue;
-    }
-    poses.emplace_back(rotations.at(observation.view_id), center->second);
-    bearings.push_back(observation.bearing);
-  }
-  if (poses.size() < 2) return std::nullopt;
-  return TriangulateMultiView(poses, bearings, options.triangulation);
-}
-
-// One point per track. A DLT over all observations is pulled by outlier observations (it is
-// least squares), which the angular filter would then blame on good observations too; so the
-// point is triangulated again from the observations consistent with the first estimate.
-std::vector<std::optional<Eigen::Vector3d>> TriangulateTracks(const std::vector<PositioningTrack>& tracks,
-                                                              const std::map<IndexT, Eigen::Matrix3d>& rotations,
-                                                              const std::map<IndexT, Eigen::Vector3d>& centers,
-                                                              const TranslationAveragingOptions& options) {
-  std::vector<std::optional<Eigen::Vector3d>> points;
-  points.reserve(tracks.size());
-  for (const PositioningTrack& track : tracks) {
-    const std::optional<Eigen::Vector3d> first = TriangulateTrack(track, rotations, centers, options, std::nullopt);
-    const std::optional<Eigen::Vector3d> refined =
-        first ? TriangulateTrack(track, rotations, centers, options, first) : std::nullopt;
-    points.push_back(refined ? refined : first);
-  }
-  return points;
-}
-
 }  // namespace
 
 TranslationAveragingResult PositionCamerasByTranslationAveraging(const TranslationAveragingOptions& options,
@@ -107,7 +67,7 @@ TranslationAveragingResult PositionCamerasByTranslationAveraging(const Translati
   for (size_t c = 0; c < problem.cameras.size(); ++c) center_of[problem.cameras[c]] = centers[c];
   const std::vector<PositioningTrack> rays = MakePositioningTracks(*sfm_data, features, rotations, tracks);
   const std::vector<std::optional<Eigen::Vector3d>> points =
-      TriangulateTracks(rays, rotations, center_of, options);
+      TriangulateTracks(rays, rotations, center_of, options.max_angular_residual_deg, options.triangulation);
   WritePositionedScene(rotations, center_of, rays, points, options.max_angular_residual_deg, sfm_data, &positioning);
   positioning.success = true;
   return result;

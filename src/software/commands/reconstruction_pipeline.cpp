@@ -140,6 +140,24 @@ nlohmann::json TimingsJson(const EngineSettings& settings, const sfm_pruning::Vi
                     {"landmarks", engine.num_landmarks},
                     {"observations", engine.num_observations},
                     {"final_rms_px", engine.final_rms_px}};
+  // What the solvers did (iterations dominate the time of positioning and bundle adjustment).
+  nlohmann::json adjustments = nlohmann::json::array();
+  for (const sfm_pruning::BundleAdjustmentResult& ba : engine.bundle_adjustments) {
+    adjustments.push_back({{"seconds", ba.seconds},
+                           {"iterations", ba.num_iterations},
+                           {"termination", ba.termination},
+                           {"landmarks", ba.num_landmarks},
+                           {"observations", ba.num_observations},
+                           {"initial_rms_px", ba.initial_rms_px},
+                           {"final_rms_px", ba.final_rms_px}});
+  }
+  json["solvers"] = {{"positioning",
+                      {{"iterations", engine.positioning.num_solver_iterations},
+                       {"solved_tracks", engine.positioning.num_solved_tracks},
+                       {"landmarks", engine.positioning.num_landmarks},
+                       {"observations", engine.positioning.num_observations},
+                       {"termination", engine.positioning.message}}},
+                     {"bundle_adjustments", std::move(adjustments)}};
   json["dropped_views"] = std::move(dropped);
   return json;
 }
