@@ -22,6 +22,9 @@ int main(int argc, char** argv) {
   app.require_subcommand(1);
   app.set_version_flag("--version", "prunesfm 0.1.0");
 
+  prunesfm::AddInitCommand(app);
+  prunesfm::AddFeaturesCommand(app);
+  prunesfm::AddMatchCommand(app);
   prunesfm::AddReconstructCommand(app);
   prunesfm::AddRunCommand(app);
   prunesfm::AddPruneCommand(app);

@@ -21,12 +21,12 @@ struct ReconstructionInput {
   sfm_pruning::FeaturesPerView features;
   sfm_pruning::PairwiseMatches putative;  // to verify (used when `verified` is empty)
   sfm_pruning::VerifiedPairs verified;    // COLMAP two_view_geometries
-  // Intrinsics whose focal is a guess (COLMAP's prior_focal_length = 0); OpenMVG intrinsics are
-  // trusted.
+  // Intrinsics whose focal is a guess (COLMAP's prior_focal_length = 0; `focal_trusted` false in
+  // the camera_priors.json of `prunesfm init`); other OpenMVG intrinsics are trusted.
   std::set<sfm_pruning::IndexT> guessed_focal;
 };
 
-// sfm_data.json (views + intrinsics), the .feat files of `matches_dir` and the match file chosen
+// sfm_data.json (views + intrinsics; guessed focals from a camera_priors.json beside it), the .feat files of `matches_dir` and the match file chosen
 // by FindOpenMvgMatchesFile (`match_file` when given). Matches are verified again whatever
 // OpenMVG did with them (its files carry no relative pose).
 ReconstructionInput ReadOpenMvgInput(const std::filesystem::path& sfm_data, const std::filesystem::path& matches_dir,

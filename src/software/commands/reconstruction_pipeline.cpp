@@ -255,7 +255,7 @@ Solution Solve(const EngineSettings& settings, const ReconstructionInput& input,
 }  // namespace
 
 void RunReconstruction(const EngineSettings& settings, const ReconstructionInput& input, const fs::path& output,
-                       double read_seconds) {
+                       double read_seconds, const std::vector<FrontEndStageTiming>& front_end) {
   SilenceSolverLogging();
   const std::set<sfm_pruning::IndexT> refined = RefinedIntrinsics(settings.intrinsics, input);
   sfm_pruning::SfmData scene = input.scene;
@@ -305,6 +305,11 @@ void RunReconstruction(const EngineSettings& settings, const ReconstructionInput
                                    {"focal", settings.intrinsics.focal},
                                    {"distortion", settings.intrinsics.distortion},
                                    {"principal_point", settings.intrinsics.principal_point}};
+  // The image front end's stages (`run IMAGES OUT`) come first.
+  stage_list.insert(stage_list.begin(), front_end.size(), nlohmann::json());
+  for (size_t k = 0; k < front_end.size(); ++k) {
+    stage_list[k] = {{"stage", front_end[k].stage}, {"seconds", front_end[k].seconds}, {"reused", front_end[k].reused}};
+  }
   for (const auto& dropped : timings.at("dropped_views")) {
     Info("dropped view " + dropped.at("view_id").dump() + " (" + dropped.at("image").get<std::string>() +
          "): " + dropped.at("reason").get<std::string>());

@@ -7,6 +7,7 @@
 #include <filesystem>
 #include <set>
 #include <string>
+#include <vector>
 
 #include "sfm_pruning/global/view_graph_builder.hpp"
 #include "sfm_pruning/pruning/view_graph_pruning.hpp"
@@ -53,10 +54,19 @@ sfm_pruning::FocalCalibrationReport CalibrateFocals(const EngineSettings& settin
                                                     const std::set<sfm_pruning::IndexT>& refined,
                                                     sfm_pruning::SfmData* scene);
 
+// A stage that ran before the input was read (the image front end of `prunesfm run IMAGES OUT`),
+// listed first in timings.json; `reused` when a previous run's result was taken as is.
+struct FrontEndStageTiming {
+  std::string stage;
+  double seconds = 0.0;
+  bool reused = false;
+};
+
 // Verifies (when the input holds putative matches), runs the engine and writes the outputs into
 // `output`. Throws sfm_pruning::Error (one line naming input.source) when there is no edge or
 // the engine fails. `read_seconds` is recorded in timings.json.
 void RunReconstruction(const EngineSettings& settings, const ReconstructionInput& input,
-                       const std::filesystem::path& output, double read_seconds);
+                       const std::filesystem::path& output, double read_seconds,
+                       const std::vector<FrontEndStageTiming>& front_end = {});
 
 }  // namespace prunesfm

@@ -1,0 +1,189 @@
+#include "sfm_pruning/features/descriptor_matching.hpp"
+
+#include <algorithm>
+#include <limits>
+#include <memory>
+#include <vector>
+
+#include <Eigen/Core>
+#include <opencv2/core.hpp>
+#include <opencv2/flann.hpp>
+
+#include "sfm_pruning/util/parallel_for.hpp"
+
+namespace sfm_pruning {
+namespace {
+
+constexpr float kInfinity = std::numeric_limits<float>::infinity();
+
+// The two nearest neighbours of one descriptor, squared L2 distances.
+struct NearestTwo {
+  int best = -1;
+  float d1 = kInfinity;
+  float d2 = kInfinity;
+  void Offer(int index, float distance) {
+    if (distance < d1) {
+      d2 = d1;
+      d1 = distance;
+      best = index;
+    } else if (distance < d2) {
+      d2 = distance;
+    }
+  }
+};
+
+cv::Mat ToFloatMat(const std::vector<Descriptor>& descriptors) {
+  cv::Mat mat(static_cast<int>(descriptors.size()), kDescriptorSize, CV_32F);
+  for (int r = 0; r < mat.rows; ++r) {
+    float* row = mat.ptr<float>(r);
+    for (int d = 0; d < kDescriptorSize; ++d) row[d] = descriptors[static_cast<size_t>(r)][d];
+  }
+  return mat;
+}
+
+// A kd-tree forest over one view's descriptors (the index refers to `data`, which it keeps).
+struct FlannView {
+  cv::Mat data;
+  std::unique_ptr<cv::flann::Index> index;
+};
+
+std::vector<NearestTwo> FlannQuery(const FlannView& target, const cv::Mat& queries, int checks) {
+  std::vector<NearestTwo> result(static_cast<size_t>(queries.rows));
+  if (queries.rows == 0 || target.data.rows == 0) return result;
+  const int knn = std::min(2, target.data.rows);
+  cv::Mat indices(queries.rows, knn, CV_32S);
+  cv::Mat distances(queries.rows, knn, CV_32F);
+  target.index->knnSearch(queries, indices, distances, knn, cv::flann::SearchParams(checks));
+  for (int q = 0; q < queries.rows; ++q) {
+    for (int k = 0; k < knn; ++k) {
+      const int index = indices.at<int>(q, k);
+      if (index >= 0) result[static_cast<size_t>(q)].Offer(index, distances.at<float>(q, k));
+    }
+  }
+  return result;
+}
+
+using RowMatrix = Eigen::Matrix<float, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor>;
+
+RowMatrix ToEigen(const std::vector<Descriptor>& descriptors) {
+  RowMatrix m(static_cast<Eigen::Index>(descriptors.size()), kDescriptorSize);
+  for (Eigen::Index r = 0; r < m.rows(); ++r) {
+    for (int d = 0; d < kDescriptorSize; ++d) m(r, d) = descriptors[static_cast<size_t>(r)][d];
+  }
+  return m;
+}
+
+// Exact nearest two in both directions from all squared distances |a|^2 + |b|^2 - 2 a.b, computed
+// a block of rows at a time so that memory stays at block x |b| floats.
+void BruteForceNearest(const std::vector<Descriptor>& a, const std::vector<Descriptor>& b,
+                       std::vector<NearestTwo>* a_to_b, std::vector<NearestTwo>* b_to_a) {
+  a_to_b->assign(a.size(), {});
+  b_to_a->assign(b.size(), {});
+  if (a.empty() || b.empty()) return;
+  const RowMatrix A = ToEigen(a);
+  const RowMatrix B = ToEigen(b);
+  const Eigen::VectorXf a_norms = A.rowwise().squaredNorm();
+  const Eigen::VectorXf b_norms = B.rowwise().squaredNorm();
+  constexpr Eigen::Index kBlock = 512;
+  for (Eigen::Index start = 0; start < A.rows(); start += kBlock) {
+    const Eigen::Index rows = std::min(kBlock, A.rows() - start);
+    const RowMatrix dots = A.middleRows(start, rows) * B.transpose();
+    for (Eigen::Index r = 0; r < rows; ++r) {
+      const int i = static_cast<int>(start + r);
+      for (Eigen::Index c = 0; c < dots.cols(); ++c) {
+        const float distance = std::max(0.f, a_norms(start + r) + b_norms(c) - 2.f * dots(r, c));
+        (*a_to_b)[static_cast<size_t>(i)].Offer(static_cast<int>(c), distance);
+        (*b_to_a)[static_cast<size_t>(c)].Offer(i, distance);
+      }
+    }
+  }
+}
+
+bool PassesRatio(const NearestTwo& n, float max_ratio_squared) {
+  return n.best >= 0 && (n.d2 == kInfinity || n.d1 < max_ratio_squared * n.d2);
+}
+
+std::vector<FeatureMatch> Combine(const std::vector<NearestTwo>& forward, const std::vector<NearestTwo>& backward,
+                                  const DescriptorMatchingOptions& options) {
+  const float ratio2 = static_cast<float>(options.max_ratio * options.max_ratio);
+  std::vector<FeatureMatch> matches;
+  for (size_t i = 0; i < forward.size(); ++i) {
+    const NearestTwo& f = forward[i];
+    if (!PassesRatio(f, ratio2)) continue;
+    if (options.mutual_check) {
+      const NearestTwo& back = backward[static_cast<size_t>(f.best)];
+      if (!PassesRatio(back, ratio2) || back.best != static_cast<int>(i)) continue;
+    }
+    matches.push_back({static_cast<IndexT>(i), static_cast<IndexT>(f.best)});
+  }
+  return matches;
+}
+
+}  // namespace
+
+PairwiseMatches MatchDescriptors(const FeaturesPerView& features, const PairSet& pairs,
+                                 const DescriptorMatchingOptions& options, const ProgressCallback& progress) {
+  std::vector<ViewPair> jobs;
+  for (const ViewPair& pair : pairs) {
+    const auto a = features.find(pair.first);
+    const auto b = features.find(pair.second);
+    if (a == features.end() || b == features.end() || a->second.descriptors.empty() ||
+        b->second.descriptors.empty()) {
+      continue;
+    }
+    jobs.push_back(pair);
+  }
+
+  std::map<IndexT, FlannView> flann;
+  if (options.matcher == DescriptorMatcher::kFlann) {
+    std::vector<IndexT> views;
+    for (const ViewPair& pair : jobs) {
+      views.push_back(pair.first);
+      views.push_back(pair.second);
+    }
+    std::sort(views.begin(), views.end());
+    views.erase(std::unique(views.begin(), views.end()), views.end());
+    for (const IndexT view : views) flann[view];  // all slots exist before the workers write them
+    ParallelFor(
+        views.size(), options.num_threads,
+        [&](size_t k) {
+          FlannView& entry = flann.at(views[k]);
+          entry.data = ToFloatMat(features.at(views[k]).descriptors);
+          // The kd-trees' random choices use this thread's cv::theRNG(): seeded per view, so the
+          // trees do not depend on the thread that builds them.
+          cv::theRNG() = cv::RNG(options.seed * 1000003ULL + views[k] + 1);
+          entry.index = std::make_unique<cv::flann::Index>(entry.data, cv::flann::KDTreeIndexParams(options.flann_trees));
+        },
+        progress, "indexing descriptors");
+  }
+
+  std::vector<std::vector<FeatureMatch>> results(jobs.size());
+  ParallelFor(
+      jobs.size(), options.num_threads,
+      [&](size_t k) {
+        const ViewPair& pair = jobs[k];
+        std::vector<NearestTwo> forward;
+        std::vector<NearestTwo> backward;
+        if (options.matcher == DescriptorMatcher::kFlann) {
+          const FlannView& a = flann.at(pair.first);
+          const FlannView& b = flann.at(pair.second);
+          forward = FlannQuery(b, a.data, options.flann_checks);
+          if (options.mutual_check) backward = FlannQuery(a, b.data, options.flann_checks);
+        } else {
+          BruteForceNearest(features.at(pair.first).descriptors, features.at(pair.second).descriptors, &forward,
+                            &backward);
+        }
+        results[k] = Combine(forward, backward, options);
+      },
+      progress, "matching pairs");
+
+  PairwiseMatches matches;
+  for (size_t k = 0; k < jobs.size(); ++k) {
+    if (static_cast<int>(results[k].size()) >= std::max(options.min_num_matches, 1)) {
+      matches[jobs[k]] = std::move(results[k]);
+    }
+  }
+  return matches;
+}
+
+}  // namespace sfm_pruning

@@ -1,0 +1,55 @@
+#include "sfm_pruning/features/focal_prior.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdint>
+#include <utility>
+
+namespace sfm_pruning {
+namespace {
+
+constexpr std::pair<FocalSource, const char*> kNames[] = {
+    {FocalSource::kUserFocal, "user_focal"},           {FocalSource::kKFile, "k_file"},
+    {FocalSource::kExifSensorWidth, "exif_sensor_width"}, {FocalSource::kExif35mm, "exif_35mm"},
+    {FocalSource::kExifFocalPlane, "exif_focal_plane"},   {FocalSource::kDefaultGuess, "default_guess"},
+};
+
+}  // namespace
+
+std::string FocalSourceName(FocalSource source) {
+  for (const auto& [value, name] : kNames) {
+    if (value == source) return name;
+  }
+  return "unknown";
+}
+
+std::optional<FocalSource> FocalSourceFromName(const std::string& name) {
+  for (const auto& [value, known] : kNames) {
+    if (name == known) return value;
+  }
+  return std::nullopt;
+}
+
+FocalPrior FocalFromExif(const ExifMetadata* exif, uint32_t width, uint32_t height, const FocalPriorOptions& options) {
+  const double max_side = std::max(width, height);
+  if (exif != nullptr) {
+    if (exif->focal_mm && options.sensor_width_mm > 0.0) {
+      return {*exif->focal_mm * max_side / options.sensor_width_mm, FocalSource::kExifSensorWidth};
+    }
+    if (exif->focal_35mm) {
+      // The 35 mm equivalent keeps the field of view along the diagonal.
+      const double diagonal_px = std::hypot(static_cast<double>(width), static_cast<double>(height));
+      return {*exif->focal_35mm * diagonal_px / kFullFrameDiagonalMm, FocalSource::kExif35mm};
+    }
+    if (exif->focal_mm && exif->focal_plane_x_res_mm) {
+      // Pixels per mm along the sensor's long side at the recorded resolution (PixelXDimension
+      // when given), scaled to this image: it may have been resized or rotated after capture.
+      const double recorded_width = exif->pixel_x_dimension.value_or(max_side);
+      const double px_per_mm = *exif->focal_plane_x_res_mm * max_side / recorded_width;
+      return {*exif->focal_mm * px_per_mm, FocalSource::kExifFocalPlane};
+    }
+  }
+  return {options.default_focal_factor * max_side, FocalSource::kDefaultGuess};
+}
+
+}  // namespace sfm_pruning

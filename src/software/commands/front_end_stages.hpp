@@ -1,0 +1,89 @@
+// The image front end's stages as `prunesfm init`, `features`, `match` and `run IMAGES OUT` share
+// them: their command-line options, and each stage from its input files to its output files.
+//
+// Files (OpenMVG's layout, so OpenMVG tools can take over at any point):
+//   <matches_dir>/sfm_data.json         views + intrinsics (init)
+//   <matches_dir>/camera_priors.json    focal source per camera, skipped images (init)
+//   <matches_dir>/<image>.feat/.desc, image_describer.json   SIFT (features)
+//   <matches_dir>/matches.putative.bin  descriptor matches (match)
+//   <matches_dir>/matches.e.bin         their inliers after the two-view verification (match)
+#pragma once
+
+#include <cstddef>
+#include <cstdint>
+#include <filesystem>
+#include <string>
+
+#include "sfm_pruning/sfm/features.hpp"
+#include "sfm_pruning/sfm/sfm_data.hpp"
+
+namespace CLI {
+class App;
+}
+
+namespace prunesfm {
+
+struct InitSettings {
+  double focal = 0.0;  // > 0: every camera's focal in pixels
+  std::string k_file;
+  double sensor_width_mm = 0.0;
+  double default_focal_factor = 1.2;
+  std::string camera_model = "pinhole_radial_k1";
+  std::string grouping = "camera";  // or "image"
+};
+
+struct FeatureSettings {
+  int max_features = 8192;
+  int max_image_size = 3200;
+  bool no_root_sift = false;
+};
+
+struct MatchSettings {
+  std::string pairs = "exhaustive";  // or "sequential", "list"
+  int window = 10;
+  bool loop = false;
+  std::string pair_list;
+  std::string matcher = "FLANN";  // or "BRUTE_FORCE"
+  double ratio = 0.8;
+  bool no_mutual = false;
+  int flann_checks = 64;
+  uint64_t seed = 0;
+};
+
+void AddInitOptions(CLI::App* cmd, InitSettings* settings);
+void AddFeatureOptions(CLI::App* cmd, FeatureSettings* settings);
+// `with_seed`: false when the command already has --seed (run's engine options).
+void AddMatchOptions(CLI::App* cmd, MatchSettings* settings, bool with_seed);
+
+// One line per setting, the key of a stage in run's manifest (a changed option reruns it).
+std::string SettingsKey(const InitSettings& settings);
+std::string SettingsKey(const FeatureSettings& settings);
+std::string SettingsKey(const MatchSettings& settings);
+
+// Threads of the front-end stages: `requested` when > 0, else every core (their results do not
+// depend on the count).
+int FrontEndThreads(int requested);
+
+// image_dir -> sfm_path (sfm_data.json) + camera_priors.json beside it. Reports skipped images
+// and the cameras on stderr.
+void RunInitStage(const InitSettings& settings, const std::filesystem::path& image_dir,
+                  const std::filesystem::path& sfm_path, int num_threads);
+
+// The scene's images -> .feat/.desc in matches_dir. Returns the features.
+sfm_pruning::FeaturesPerView RunFeatureStage(const FeatureSettings& settings, const sfm_pruning::SfmData& scene,
+                                             const std::filesystem::path& matches_dir, int num_threads);
+
+struct MatchStageSummary {
+  size_t num_pairs = 0;             // pairs selected
+  size_t num_putative_pairs = 0;    // pairs with enough descriptor matches
+  size_t num_putative_matches = 0;
+  size_t num_verified_pairs = 0;
+  size_t num_verified_inliers = 0;
+};
+
+// Features (with descriptors) -> matches.putative.bin and matches.e.bin in matches_dir.
+MatchStageSummary RunMatchStage(const MatchSettings& settings, const sfm_pruning::SfmData& scene,
+                                const sfm_pruning::FeaturesPerView& features,
+                                const std::filesystem::path& matches_dir, int num_threads);
+
+}  // namespace prunesfm

@@ -1,0 +1,104 @@
+// prunesfm init / features / match / run IMAGES OUT end to end on rendered images (and a corrupt
+// one): outputs, skipped images, resumability, and the one-line errors.
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <fstream>
+
+#include <nlohmann/json.hpp>
+
+#include "features/rendered_scene.hpp"
+#include "run_prunesfm.hpp"
+#include "sfm_pruning/io/openmvg_matches.hpp"
+#include "support/test_data.hpp"
+
+namespace sfm_pruning::testing {
+namespace {
+namespace fs = std::filesystem;
+
+fs::path RenderedFolder(const std::string& name, int num_views) {
+  const fs::path dir = ScratchDir(name) / "images";
+  WriteRoomImages(dir, num_views);
+  std::ofstream(dir / "zz_corrupt.jpg", std::ios::binary) << "\xff\xd8\xff\xe0 truncated";
+  return dir;
+}
+
+nlohmann::json ReadJson(const fs::path& path) { return nlohmann::json::parse(std::ifstream(path)); }
+
+std::map<std::string, bool> ReusedStages(const fs::path& out) {
+  std::map<std::string, bool> reused;
+  const nlohmann::json timings = ReadJson(out / "timings.json");
+  for (const auto& stage : timings.at("stages")) {
+    if (stage.contains("reused")) reused[stage.at("stage").get<std::string>()] = stage.at("reused").get<bool>();
+  }
+  return reused;
+}
+
+TEST(CliFrontEnd, RunFromImagesReconstructsSkipsCorruptImagesAndResumes) {
+  const fs::path images = RenderedFolder("cli_front_end_run", 5);
+  const fs::path out = images.parent_path() / "out";
+  CommandResult result = RunPrunesfm({"run", images.string(), out.string(), "--focal", "420", "--max_features", "3000"});
+  ASSERT_EQ(result.exit_code, 0) << result.err;
+  EXPECT_NE(result.err.find("skipped " + (images / "zz_corrupt.jpg").string() + ": does not decode"), std::string::npos)
+      << result.err;
+  for (const char* file : {"matches/sfm_data.json", "matches/camera_priors.json", "matches/view_0.feat",
+                           "matches/view_0.desc", "matches/matches.putative.bin", "matches/matches.e.bin",
+                           "sfm_data.json", "sparse/0/images.bin", "cloud_and_poses.ply", "timings.json",
+                           "run_manifest.json"}) {
+    EXPECT_TRUE(fs::exists(out / file)) << file;
+  }
+  const nlohmann::json timings = ReadJson(out / "timings.json");
+  EXPECT_EQ(timings.at("counts").at("registered_views"), 5);
+  EXPECT_EQ(ReusedStages(out), (std::map<std::string, bool>{{"init", false}, {"features", false}, {"match", false}}));
+  const nlohmann::json priors = ReadJson(out / "matches" / "camera_priors.json");
+  EXPECT_EQ(priors.at("cameras")[0].at("focal_source"), "user_focal");
+  EXPECT_EQ(priors.at("skipped_images")[0].at("image"), "zz_corrupt.jpg");
+  // Every pair of neighbours is verified.
+  const PairwiseMatches verified = ReadOpenMvgMatches(out / "matches" / "matches.e.bin");
+  for (IndexT k = 0; k + 1 < 5; ++k) EXPECT_EQ(verified.count({k, k + 1}), 1u) << k;
+
+  // Same inputs and options: every stage is reused.
+  result = RunPrunesfm({"run", images.string(), out.string(), "--focal", "420", "--max_features", "3000"});
+  ASSERT_EQ(result.exit_code, 0) << result.err;
+  EXPECT_EQ(ReusedStages(out), (std::map<std::string, bool>{{"init", true}, {"features", true}, {"match", true}}));
+  // A feature option changed: features and match rerun, the listing is reused.
+  result = RunPrunesfm({"run", images.string(), out.string(), "--focal", "420", "--max_features", "2500"});
+  ASSERT_EQ(result.exit_code, 0) << result.err;
+  EXPECT_EQ(ReusedStages(out), (std::map<std::string, bool>{{"init", true}, {"features", false}, {"match", false}}));
+}
+
+TEST(CliFrontEnd, StagesRunOneByOneWithSequentialPairs) {
+  const fs::path images = RenderedFolder("cli_front_end_stages", 4);
+  const fs::path matches = images.parent_path() / "matches";
+  CommandResult result = RunPrunesfm({"init", "-i", images.string(), "-o", (matches / "sfm_data.json").string()});
+  ASSERT_EQ(result.exit_code, 0) << result.err;
+  EXPECT_NE(result.err.find("default_guess (a guess)"), std::string::npos) << result.err;
+  result = RunPrunesfm({"features", "-s", (matches / "sfm_data.json").string(), "-o", matches.string(),
+                        "--max_features", "1500", "--num_threads", "2"});
+  ASSERT_EQ(result.exit_code, 0) << result.err;
+  result = RunPrunesfm({"match", "-s", (matches / "sfm_data.json").string(), "-m", matches.string(), "--pairs",
+                        "sequential", "--window", "1", "--matcher", "BRUTE_FORCE"});
+  ASSERT_EQ(result.exit_code, 0) << result.err;
+  const PairwiseMatches putative = ReadOpenMvgMatches(matches / "matches.putative.bin");
+  EXPECT_EQ(putative.size(), 3u);
+  for (const auto& [pair, list] : putative) EXPECT_EQ(pair.second, pair.first + 1);
+}
+
+TEST(CliFrontEnd, BadInputIsOneLine) {
+  const fs::path scratch = ScratchDir("cli_front_end_errors");
+  CommandResult result = RunPrunesfm({"run", (scratch / "missing").string(), (scratch / "out").string()});
+  EXPECT_EQ(result.exit_code, 1);
+  EXPECT_EQ(CountLines(result.err), 1) << result.err;
+  EXPECT_NE(result.err.find("missing: not a folder of images"), std::string::npos) << result.err;
+  fs::create_directories(scratch / "junk");
+  std::ofstream(scratch / "junk" / "a.png") << "junk";
+  result = RunPrunesfm({"init", "-i", (scratch / "junk").string(), "-o", (scratch / "s.json").string()});
+  EXPECT_EQ(result.exit_code, 1);
+  EXPECT_NE(result.err.find("none of the 1 images decodes"), std::string::npos) << result.err;
+  result = RunPrunesfm({"run", (scratch / "junk").string()});
+  EXPECT_EQ(result.exit_code, 1);
+  EXPECT_NE(result.err.find("needs an OUT_DIR"), std::string::npos) << result.err;
+}
+
+}  // namespace
+}  // namespace sfm_pruning::testing
