@@ -89,6 +89,7 @@ TEST(DescriptorMatching, ResultDoesNotDependOnThreadsAndSkipsPairsWithoutFeature
   FeaturesPerView features = TwoViews();
   features[2] = features[1];
   DescriptorMatchingOptions options;
+  options.matcher = DescriptorMatcher::kFlann;  // the kd-trees are seeded per view, not per thread
   options.num_threads = 1;
   const PairwiseMatches one = MatchDescriptors(features, {{0, 1}, {0, 2}, {1, 2}, {0, 9}}, options);
   options.num_threads = 3;

@@ -119,6 +119,11 @@ std::vector<FeatureMatch> Combine(const std::vector<NearestTwo>& forward, const 
   return matches;
 }
 
+bool UseBruteForce(const DescriptorMatchingOptions& options, size_t n_a, size_t n_b) {
+  if (options.matcher != DescriptorMatcher::kAuto) return options.matcher == DescriptorMatcher::kBruteForce;
+  return static_cast<double>(n_a) * static_cast<double>(n_b) <= kAutoBruteForceBalance * static_cast<double>(n_a + n_b);
+}
+
 }  // namespace
 
 PairwiseMatches MatchDescriptors(const FeaturesPerView& features, const PairSet& pairs,
@@ -134,10 +139,14 @@ PairwiseMatches MatchDescriptors(const FeaturesPerView& features, const PairSet&
     jobs.push_back(pair);
   }
 
+  const auto brute_force = [&](const ViewPair& pair) {
+    return UseBruteForce(options, features.at(pair.first).size(), features.at(pair.second).size());
+  };
   std::map<IndexT, FlannView> flann;
-  if (options.matcher == DescriptorMatcher::kFlann) {
-    std::vector<IndexT> views;
+  {
+    std::vector<IndexT> views;  // the views of the pairs FLANN matches
     for (const ViewPair& pair : jobs) {
+      if (brute_force(pair)) continue;
       views.push_back(pair.first);
       views.push_back(pair.second);
     }
@@ -164,7 +173,7 @@ PairwiseMatches MatchDescriptors(const FeaturesPerView& features, const PairSet&
         const ViewPair& pair = jobs[k];
         std::vector<NearestTwo> forward;
         std::vector<NearestTwo> backward;
-        if (options.matcher == DescriptorMatcher::kFlann) {
+        if (!brute_force(pair)) {
           const FlannView& a = flann.at(pair.first);
           const FlannView& b = flann.at(pair.second);
           forward = FlannQuery(b, a.data, options.flann_checks);

@@ -101,8 +101,10 @@ void AddMatchOptions(CLI::App* cmd, MatchSettings* settings, bool with_seed) {
   cmd->add_flag("--loop", settings->loop, "sequential: the last images are also paired with the first (a ring)");
   cmd->add_option("--pair_list", settings->pair_list, "list: OpenMVG pair file (lines 'I J K ...')")
       ->check(CLI::ExistingFile);
-  cmd->add_option("--matcher", settings->matcher, "FLANN kd-trees (approximate) or exact BRUTE_FORCE")
-      ->check(CLI::IsMember({"FLANN", "BRUTE_FORCE"}))
+  cmd->add_option("--matcher", settings->matcher,
+                  "FLANN kd-trees (approximate), exact BRUTE_FORCE, or AUTO: per pair the cheaper of the two "
+                  "(brute force up to ~3700 features per image)")
+      ->check(CLI::IsMember({"AUTO", "FLANN", "BRUTE_FORCE"}))
       ->capture_default_str();
   cmd->add_option("--ratio", settings->ratio, "Lowe's ratio test on descriptor distances")
       ->check(CLI::Range(0.1, 1.0))
@@ -199,7 +201,8 @@ MatchStageSummary RunMatchStage(const MatchSettings& settings, const sfm_pruning
 
   sfm_pruning::DescriptorMatchingOptions options;
   options.matcher = settings.matcher == "BRUTE_FORCE" ? sfm_pruning::DescriptorMatcher::kBruteForce
-                                                      : sfm_pruning::DescriptorMatcher::kFlann;
+                    : settings.matcher == "FLANN"     ? sfm_pruning::DescriptorMatcher::kFlann
+                                                      : sfm_pruning::DescriptorMatcher::kAuto;
   options.max_ratio = settings.ratio;
   options.mutual_check = !settings.no_mutual;
   options.flann_checks = settings.flann_checks;

@@ -43,7 +43,7 @@ struct MatchSettings {
   int window = 10;
   bool loop = false;
   std::string pair_list;
-  std::string matcher = "FLANN";  // or "BRUTE_FORCE"
+  std::string matcher = "AUTO";  // or "FLANN", "BRUTE_FORCE"
   double ratio = 0.8;
   bool no_mutual = false;
   int flann_checks = 64;

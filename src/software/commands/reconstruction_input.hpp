@@ -26,7 +26,8 @@ struct ReconstructionInput {
   std::set<sfm_pruning::IndexT> guessed_focal;
 };
 
-// sfm_data.json (views + intrinsics; guessed focals from a camera_priors.json beside it), the .feat files of `matches_dir` and the match file chosen
+// sfm_data.json (views + intrinsics; guessed focals from a camera_priors.json beside it), the
+// .feat files of `matches_dir` and the match file chosen
 // by FindOpenMvgMatchesFile (`match_file` when given). Matches are verified again whatever
 // OpenMVG did with them (its files carry no relative pose).
 ReconstructionInput ReadOpenMvgInput(const std::filesystem::path& sfm_data, const std::filesystem::path& matches_dir,
