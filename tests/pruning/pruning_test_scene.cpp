@@ -33,10 +33,6 @@ Keypoint MakeKeypoint(const Eigen::Vector2d& pixel) {
 
 }  // namespace
 
-Pose Similarity::Apply(const Pose& pose) const {
-  return Pose(pose.rotation * rotation.transpose(), Apply(pose.center));
-}
-
 Similarity RandomSimilarity(uint64_t seed, double scale) {
   std::mt19937_64 rng(seed);
   std::normal_distribution<double> normal(0.0, 1.0);

@@ -10,18 +10,13 @@
 #include "sfm_pruning/pruning/subgraph_solution.hpp"
 #include "sfm_pruning/sfm/features.hpp"
 #include "sfm_pruning/sfm/sfm_data.hpp"
+#include "sfm_pruning/sfm/similarity.hpp"
 #include "sfm_pruning/view_graph/view_graph.hpp"
 
 namespace sfm_pruning::testing {
 
-// x_k = scale · rotation · x_world + translation
-struct Similarity {
-  double scale = 1.0;
-  Eigen::Matrix3d rotation = Eigen::Matrix3d::Identity();
-  Eigen::Vector3d translation = Eigen::Vector3d::Zero();
-  Pose Apply(const Pose& pose) const;
-  Eigen::Vector3d Apply(const Eigen::Vector3d& X) const { return scale * rotation * X + translation; }
-};
+// A subgraph frame: x_k = frame.Apply(x_world).
+using Similarity = Similarity3;
 
 struct PruningTestScene {
   std::vector<Pose> poses;              // ground truth, by view id 0..n-1

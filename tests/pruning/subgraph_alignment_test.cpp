@@ -86,6 +86,14 @@ TEST(SubgraphAlignment, ExactEdgesAreAllKeptAndTheScaleIsRecovered) {
     EXPECT_EQ(decision.verdict, InterSubgraphVerdict::kConsistent);
     EXPECT_LT(decision.rotation_deviation_deg, 1e-3);
   }
+  // The frame transform of the hypothesis is the true one: k1's frame ∘ k2's frame⁻¹.
+  const Similarity3 truth = setup.frame_k1.Compose(setup.frame_k2.Inverse());
+  EXPECT_EQ(result.consensus_size, 10u);
+  EXPECT_NEAR(result.k2_to_k1.scale, truth.scale, 1e-4);
+  EXPECT_LT(RotationAngleBetween(result.k2_to_k1.rotation, truth.rotation), 1e-6);
+  for (const Eigen::Vector3d& X : setup.scene.points) {
+    EXPECT_LT((result.k2_to_k1.Apply(setup.frame_k2.Apply(X)) - setup.frame_k1.Apply(X)).norm(), 1e-4);
+  }
 }
 
 TEST(SubgraphAlignment, RansacRemovesEdgesToTheTwinStructure) {

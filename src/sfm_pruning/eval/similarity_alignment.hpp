@@ -11,20 +11,9 @@
 #include <Eigen/Core>
 
 #include "sfm_pruning/sfm/pose.hpp"
+#include "sfm_pruning/sfm/similarity.hpp"
 
 namespace sfm_pruning {
-
-// X' = scale * rotation * X + translation.
-struct Similarity3 {
-  double scale = 1.0;
-  Eigen::Matrix3d rotation = Eigen::Matrix3d::Identity();
-  Eigen::Vector3d translation = Eigen::Vector3d::Zero();
-
-  Eigen::Vector3d Apply(const Eigen::Vector3d& X) const { return scale * rotation * X + translation; }
-  // The same camera expressed in the transformed world: centre moved with the world, and
-  // world' -> camera = (world -> camera) * rotation^T.
-  Pose Apply(const Pose& pose) const { return Pose(pose.rotation * rotation.transpose(), Apply(pose.center)); }
-};
 
 // Least-squares similarity (Umeyama 1991) minimising sum_k |target_k - T(source_k)|^2.
 // Returns nullopt when the sizes differ or either point set has fewer than 3 points or lies on

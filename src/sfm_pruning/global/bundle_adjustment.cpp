@@ -16,7 +16,7 @@ namespace sfm_pruning {
 namespace {
 
 // Indices of the intrinsic parameters (camera_models.hpp layouts) held constant.
-std::vector<int> ConstantIntrinsicParams(CameraModel model, const BundleAdjustmentOptions& options) {
+std::vector<int> ConstantIntrinsicParams(IndexT id, CameraModel model, const BundleAdjustmentOptions& options) {
   const int num_params = static_cast<int>(NumCameraParams(model));
   const bool two_focals = model == CameraModel::kPinholeFxFy;
   const int first_principal = two_focals ? 2 : 1;
@@ -24,7 +24,8 @@ std::vector<int> ConstantIntrinsicParams(CameraModel model, const BundleAdjustme
   std::vector<int> constant;
   for (int k = 0; k < num_params; ++k) {
     const bool refine = k < first_principal       ? options.refine_focal
-                        : k < first_principal + 2 ? options.refine_principal_point
+                        : k < first_principal + 2 ? options.refine_principal_point &&
+                                                        options.constant_principal_point.count(id) == 0
                         : k >= first_distortion   ? options.refine_distortion
                                                   : false;
     if (!refine) constant.push_back(k);
@@ -103,7 +104,7 @@ void SetIntrinsicsManifolds(const BundleAdjustmentOptions& options, const SfmDat
       problem->SetParameterBlockConstant(parameters->intrinsics(id));
       continue;
     }
-    const std::vector<int> constant = ConstantIntrinsicParams(intrinsics.model(), options);
+    const std::vector<int> constant = ConstantIntrinsicParams(id, intrinsics.model(), options);
     const int num_params = static_cast<int>(intrinsics.params().size());
     if (static_cast<int>(constant.size()) == num_params) {
       problem->SetParameterBlockConstant(parameters->intrinsics(id));

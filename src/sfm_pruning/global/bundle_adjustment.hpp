@@ -33,8 +33,11 @@ struct BundleAdjustmentOptions {
   bool refine_focal = false;            // f, or fx and fy
   bool refine_principal_point = false;  // cx, cy (Strecha needs it: ~16 px off centre)
   bool refine_distortion = false;       // k1.. / t1, t2 of models that have them
-  // Intrinsic ids held constant whatever the flags above (e.g. cameras with a trusted focal).
+  // Intrinsic ids held constant whatever the flags above (e.g. calibrated cameras).
   std::set<IndexT> constant_intrinsics;
+  // Intrinsic ids whose principal point stays put even with refine_principal_point (cameras with
+  // a focal prior from EXIF: like COLMAP, their principal point is left at the image centre).
+  std::set<IndexT> constant_principal_point;
 
   // Gauge, see above. fix_scale is only used together with fix_first_pose.
   bool fix_first_pose = true;

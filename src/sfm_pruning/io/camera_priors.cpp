@@ -15,6 +15,14 @@ std::set<IndexT> CameraPriors::IntrinsicsWithGuessedFocal() const {
   return ids;
 }
 
+std::set<IndexT> CameraPriors::IntrinsicsCalibrated() const {
+  std::set<IndexT> ids;
+  for (const CameraPrior& camera : cameras) {
+    if (camera.focal_source == "k_file") ids.insert(camera.intrinsic_id);  // FocalSourceName(kKFile)
+  }
+  return ids;
+}
+
 void WriteCameraPriors(const std::filesystem::path& path, const CameraPriors& priors) {
   nlohmann::json cameras = nlohmann::json::array();
   for (const CameraPrior& c : priors.cameras) {

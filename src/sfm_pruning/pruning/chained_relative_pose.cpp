@@ -45,4 +45,17 @@ std::optional<double> SolveChainScale(const std::vector<ChainedRelativePose>& ch
   return -cross / slope_spread;
 }
 
+Similarity3 FrameSimilarityOfChain(const Pose& mean_pose_k1, const Pose& mean_pose_k2,
+                                   const Eigen::Matrix3d& chained_rotation,
+                                   const Eigen::Vector3d& chained_translation, double beta) {
+  const Eigen::Matrix3d back_to_k1 = mean_pose_k1.rotation.transpose() * chained_rotation.transpose();
+  Similarity3 k2_to_k1;
+  k2_to_k1.scale = beta;
+  k2_to_k1.rotation = back_to_k1 * mean_pose_k2.rotation;
+  k2_to_k1.translation =
+      mean_pose_k1.center - back_to_k1 * (beta * (mean_pose_k2.rotation * mean_pose_k2.center) + chained_translation);
+  return k2_to_k1;
+}
+
 }  // namespace sfm_pruning
+

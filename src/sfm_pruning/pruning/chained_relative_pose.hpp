@@ -26,6 +26,7 @@
 #include <Eigen/Core>
 
 #include "sfm_pruning/sfm/pose.hpp"
+#include "sfm_pruning/sfm/similarity.hpp"
 
 namespace sfm_pruning {
 
@@ -50,5 +51,13 @@ ChainedRelativePose ChainRelativePose(const Pose& mean_pose_k1, const Pose& pose
 // sees the same j -> c2 translation: the set carries no scale information).
 std::optional<double> SolveChainScale(const std::vector<ChainedRelativePose>& chains,
                                       double min_relative_spread = 1e-9);
+
+// The frame transform k2 -> k1 that a chained pose c1 -> c2 (rotation R̄, translation t̄ in k1
+// units) and the scale β imply under kSubgraphFrame: camera c2's coordinates in k1 units are
+// β (R_c2 X2 + t_c2) = R̄ (R_c1 X1 + t_c1) + t̄, solved for X1:
+//   X1 = β R X2 + T,   R = R_c1^T R̄^T R_c2,   T = C_c1 − R_c1^T R̄^T (β R_c2 C_c2 + t̄).
+Similarity3 FrameSimilarityOfChain(const Pose& mean_pose_k1, const Pose& mean_pose_k2,
+                                   const Eigen::Matrix3d& chained_rotation,
+                                   const Eigen::Vector3d& chained_translation, double beta);
 
 }  // namespace sfm_pruning

@@ -109,6 +109,22 @@ struct Candidate {
   int iteration = -1;
 };
 
+// Local optimisation (Options::refine_rounds): refit on the whole consensus while it grows.
+void RefineOnConsensus(const std::vector<ChainedRelativePose>& chains, const Options& options, Candidate* candidate) {
+  for (int round = 0; round < options.refine_rounds; ++round) {
+    std::vector<size_t> members;
+    for (size_t k = 0; k < chains.size(); ++k) {
+      if (candidate->consensus.inlier[k]) members.push_back(k);
+    }
+    const std::optional<Hypothesis> refit = FitHypothesis(chains, members, options);
+    if (!refit) return;
+    Consensus consensus = CountConsensus(chains, *refit, options);
+    if (consensus.count <= candidate->consensus.count) return;
+    candidate->hypothesis = *refit;
+    candidate->consensus = std::move(consensus);
+  }
+}
+
 // One RANSAC run whose samples are drawn from `pool` (indices into chains); the consensus is
 // counted over every chain. Empty when every sample was degenerate.
 std::optional<Candidate> RansacOverPool(const std::vector<ChainedRelativePose>& chains,
@@ -138,6 +154,7 @@ std::optional<Candidate> RansacOverPool(const std::vector<ChainedRelativePose>& 
                          consensus.total_error < best->consensus.total_error);
     if (better) best = Candidate{*hypothesis, std::move(consensus), iteration};
   }
+  if (best) RefineOnConsensus(chains, options, &*best);
   return best;
 }
 
@@ -197,13 +214,11 @@ void RunRansac(const std::vector<ChainedRelativePose>& chains, const std::vector
     result->hypotheses.push_back(summary);
   }
   // Candidates whose edges miss more landmarks than the break-even are ruled out; the largest
-  // consensus among the others wins (the paper's rule). If all are ruled out, the best score.
+  // consensus among the others wins (the paper's rule). If all are ruled out, the largest of all.
   const auto ruled_out = [&](size_t c) { return result->hypotheses[c].coverage_score < 0.0; };
   for (size_t c = 1; c < candidates.size(); ++c) {
-    const AlignmentHypothesis& current = result->hypotheses[chosen];
-    const AlignmentHypothesis& other = result->hypotheses[c];
-    const bool better = ruled_out(chosen) ? (!ruled_out(c) || other.coverage_score > current.coverage_score)
-                                          : (!ruled_out(c) && other.consensus_size > current.consensus_size);
+    const bool larger = result->hypotheses[c].consensus_size > result->hypotheses[chosen].consensus_size;
+    const bool better = ruled_out(chosen) ? (!ruled_out(c) || larger) : (!ruled_out(c) && larger);
     if (better) chosen = c;
   }
   result->selected_hypothesis = static_cast<int>(chosen);
@@ -214,6 +229,7 @@ void RunRansac(const std::vector<ChainedRelativePose>& chains, const std::vector
   result->beta = best->beta;
   result->mean_rotation = best->mean_rotation;
   result->mean_translation = best->mean_translation;
+  result->consensus_size = best_consensus.count;
   const double translation_threshold = options.max_translation_deviation_fraction * best->mean_translation.norm();
   for (size_t k = 0; k < n; ++k) {
     InterSubgraphEdgeDecision& decision = result->edges[voter_edge_index[k]];
@@ -249,6 +265,7 @@ const char* InterSubgraphVerdictName(InterSubgraphVerdict verdict) {
     case InterSubgraphVerdict::kCannotVote: return "cannot_vote";
     case InterSubgraphVerdict::kFewEdges: return "few_edges";
     case InterSubgraphVerdict::kUnjudged: return "unjudged";
+    case InterSubgraphVerdict::kLoopInconsistent: return "loop_inconsistent";
   }
   return "unknown";
 }
@@ -332,6 +349,10 @@ SubgraphAlignmentResult AlignSubgraphPair(const ViewGraph& graph, const Subgraph
     return result;
   }
   RunRansac(chains, coverage, voter_edge_index, options, &result);
+  if (result.status == SubgraphAlignmentStatus::kAligned) {
+    result.k2_to_k1 =
+        FrameSimilarityOfChain(mean_k1, mean_k2, result.mean_rotation, result.mean_translation, result.beta);
+  }
   return result;
 }
 

@@ -6,6 +6,8 @@
 #include <set>
 #include <utility>
 
+#include "sfm_pruning/util/parallel_for.hpp"
+#include "sfm_pruning/util/statistics.hpp"
 #include "sfm_pruning/view_graph/components.hpp"
 
 namespace sfm_pruning {
@@ -13,6 +15,45 @@ namespace {
 
 double SecondsSince(std::chrono::steady_clock::time_point start) {
   return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+}
+
+// Pairs (k1 < k2) of accepted subgraphs joined by at least one valid edge, in increasing order.
+std::vector<std::pair<int, int>> ConnectedSubgraphPairs(const ViewGraph& graph,
+                                                        const std::vector<AcceptedSubgraph>& accepted) {
+  std::map<IndexT, int> subgraph_of;
+  for (size_t k = 0; k < accepted.size(); ++k) {
+    for (IndexT view : accepted[k].solution.view_ids) subgraph_of[view] = static_cast<int>(k);
+  }
+  std::set<std::pair<int, int>> connected;
+  graph.ForEachValidEdge([&](const ViewPair& pair, const ViewGraphEdge&) {
+    const auto a = subgraph_of.find(pair.first);
+    const auto b = subgraph_of.find(pair.second);
+    if (a == subgraph_of.end() || b == subgraph_of.end() || a->second == b->second) return;
+    connected.emplace(std::min(a->second, b->second), std::max(a->second, b->second));
+  });
+  return {connected.begin(), connected.end()};
+}
+
+// The alignment options of a pair with `num_edges` connecting edges: the sample fraction lowered
+// so that a sample holds at most max_sample_size edges (ViewGraphPruningOptions).
+SubgraphAlignmentOptions PairAlignmentOptions(const ViewGraphPruningOptions& options, size_t num_edges) {
+  SubgraphAlignmentOptions alignment = options.alignment;
+  if (options.max_sample_size > 0 && alignment.sample_fraction * static_cast<double>(num_edges) >=
+                                         static_cast<double>(options.max_sample_size + 1)) {
+    alignment.sample_fraction = (static_cast<double>(options.max_sample_size) + 0.5) / static_cast<double>(num_edges);
+  }
+  return alignment;
+}
+
+// Mean camera centre and median distance of the centres to it, in the subgraph's frame.
+SubgraphFrame FrameOfSubgraph(const SubgraphSolution& solution) {
+  SubgraphFrame frame;
+  if (solution.poses.empty()) return frame;
+  frame.centre = SubgraphMeanPose(solution).center;
+  std::vector<double> distances;
+  for (const auto& [view_id, pose] : solution.poses) distances.push_back((pose.center - frame.centre).norm());
+  frame.radius = Median(std::move(distances));
+  return frame;
 }
 
 }  // namespace
@@ -33,35 +74,56 @@ void PruneViewGraph(const ViewGraphPruningOptions& options, ViewGraph* graph, co
   out.partition = PartitionViewGraph(options.partition, component_graph, views_and_intrinsics, features, progress);
   out.timings.push_back({"subgraph partition", SecondsSince(start)});
 
-  // 2. Inter-subgraph pruning of every connected pair.
+  // 2. Alignment of every connected pair of subgraphs (decisions only, the graph is unchanged).
   start = std::chrono::steady_clock::now();
   const std::vector<AcceptedSubgraph>& accepted = out.partition.accepted;
-  std::map<IndexT, int> subgraph_of;
-  for (size_t k = 0; k < accepted.size(); ++k) {
-    for (IndexT view : accepted[k].solution.view_ids) subgraph_of[view] = static_cast<int>(k);
+  const std::vector<std::pair<int, int>> pairs = ConnectedSubgraphPairs(*graph, accepted);
+  std::vector<SubgraphAlignmentResult> alignments(pairs.size());
+  ParallelFor(
+      pairs.size(), options.num_threads,
+      [&](size_t p) {
+        const SubgraphSolution& s1 = accepted[static_cast<size_t>(pairs[p].first)].solution;
+        const SubgraphSolution& s2 = accepted[static_cast<size_t>(pairs[p].second)].solution;
+        const size_t num_edges = ConnectingEdges(*graph, s1.view_ids, s2.view_ids).size();
+        alignments[p] = AlignSubgraphPair(*graph, s1, s2, views_and_intrinsics, features,
+                                          PairAlignmentOptions(options, num_edges));
+      },
+      progress, "inter-subgraph pruning");
+
+  // 3. Loops of aligned pairs: a pair whose frame transform breaks them is cut whole.
+  std::vector<SubgraphLink> links;
+  std::vector<size_t> pair_of_link;
+  for (size_t p = 0; p < pairs.size(); ++p) {
+    if (alignments[p].status != SubgraphAlignmentStatus::kAligned) continue;
+    links.push_back({pairs[p].first, pairs[p].second, alignments[p].k2_to_k1, alignments[p].consensus_size});
+    pair_of_link.push_back(p);
   }
-  std::set<std::pair<int, int>> connected;
-  graph->ForEachValidEdge([&](const ViewPair& pair, const ViewGraphEdge&) {
-    const auto a = subgraph_of.find(pair.first);
-    const auto b = subgraph_of.find(pair.second);
-    if (a == subgraph_of.end() || b == subgraph_of.end() || a->second == b->second) return;
-    connected.emplace(std::min(a->second, b->second), std::max(a->second, b->second));
-  });
-  size_t done = 0;
-  for (const auto& [k1, k2] : connected) {
-    ReportProgress(progress, "inter-subgraph pruning", done++, connected.size());
-    const SubgraphSolution& s1 = accepted[static_cast<size_t>(k1)].solution;
-    const SubgraphSolution& s2 = accepted[static_cast<size_t>(k2)].solution;
-    SubgraphAlignmentOptions alignment_options = options.alignment;
-    const size_t num_edges = ConnectingEdges(*graph, s1.view_ids, s2.view_ids).size();
-    if (options.max_sample_size > 0 &&
-        alignment_options.sample_fraction * static_cast<double>(num_edges) >=
-            static_cast<double>(options.max_sample_size + 1)) {
-      alignment_options.sample_fraction =
-          (static_cast<double>(options.max_sample_size) + 0.5) / static_cast<double>(num_edges);
+  std::vector<SubgraphFrame> frames;
+  for (const AcceptedSubgraph& subgraph : accepted) frames.push_back(FrameOfSubgraph(subgraph.solution));
+  const SubgraphLoopResult loops = FindLoopInconsistentLinks(links, frames, options.loops);
+  out.triangles = loops.triangles;
+  std::map<size_t, RejectedLink> rejected_pairs;
+  for (const RejectedLink& rejected : loops.rejected) rejected_pairs[pair_of_link[rejected.link]] = rejected;
+
+  // 4. The decisions applied to the graph.
+  std::map<std::pair<int, int>, std::pair<size_t, size_t>> triangle_counts;  // (consistent, inconsistent)
+  for (const SubgraphTriangle& triangle : loops.triangles) {
+    for (const auto& key : {std::make_pair(triangle.a, triangle.b), std::make_pair(triangle.b, triangle.c),
+                            std::make_pair(triangle.a, triangle.c)}) {
+      auto& count = triangle_counts[key];
+      (triangle.consistent ? count.first : count.second) += 1;
     }
-    const SubgraphAlignmentResult alignment =
-        AlignSubgraphPair(*graph, s1, s2, views_and_intrinsics, features, alignment_options);
+  }
+  for (size_t p = 0; p < pairs.size(); ++p) {
+    const auto [k1, k2] = pairs[p];
+    SubgraphAlignmentResult& alignment = alignments[p];
+    const auto rejected = rejected_pairs.find(p);
+    if (rejected != rejected_pairs.end()) {
+      for (InterSubgraphEdgeDecision& decision : alignment.edges) {
+        decision.kept = false;
+        decision.verdict = InterSubgraphVerdict::kLoopInconsistent;
+      }
+    }
     SubgraphPairReport pair_report;
     pair_report.k1 = k1;
     pair_report.k2 = k2;
@@ -71,9 +133,21 @@ void PruneViewGraph(const ViewGraphPruningOptions& options, ViewGraph* graph, co
     pair_report.beta = alignment.beta;
     pair_report.hypotheses = alignment.hypotheses;
     pair_report.selected_hypothesis = alignment.selected_hypothesis;
+    pair_report.k2_to_k1 = alignment.k2_to_k1;
+    const auto counts = triangle_counts.find(pairs[p]);
+    if (counts != triangle_counts.end()) {
+      pair_report.consistent_triangles = counts->second.first;
+      pair_report.inconsistent_triangles = counts->second.second;
+    }
+    pair_report.rejected_by_loops = rejected != rejected_pairs.end();
     for (const InterSubgraphEdgeDecision& decision : alignment.edges) {
       if (decision.kept) continue;
-      const EdgeInvalidation why = InterSubgraphInvalidation(decision, alignment_options);
+      const EdgeInvalidation why =
+          pair_report.rejected_by_loops
+              ? EdgeInvalidation{EdgeInvalidReason::kSubgraphLoopInconsistent,
+                                 static_cast<double>(rejected->second.inconsistent_triangles),
+                                 static_cast<double>(rejected->second.consistent_triangles)}
+              : InterSubgraphInvalidation(decision, options.alignment);
       if (!graph->InvalidateEdge(decision.placement.view_i, decision.placement.view_j, why)) continue;
       RemovedEdge removed;
       removed.pair = decision.placement.view_i < decision.placement.view_j
@@ -88,7 +162,6 @@ void PruneViewGraph(const ViewGraphPruningOptions& options, ViewGraph* graph, co
     }
     out.pairs.push_back(pair_report);
   }
-  ReportProgress(progress, "inter-subgraph pruning", connected.size(), connected.size());
   out.timings.push_back({"inter-subgraph pruning", SecondsSince(start)});
   out.num_output_edges = graph->NumValidEdges();
   out.total_seconds = SecondsSince(total_start);
@@ -101,6 +174,7 @@ void PrunedGlobalEngineOptions::SetSeedAndThreads(uint64_t seed, int num_threads
   pruning.partition.engine.num_threads = num_threads;
   pruning.partition.louvain.seed = seed;
   pruning.alignment.seed = seed;
+  pruning.num_threads = num_threads;
 }
 
 void RunPrunedGlobalEngine(const PrunedGlobalEngineOptions& options, const ViewGraph& graph,

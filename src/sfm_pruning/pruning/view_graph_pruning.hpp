@@ -5,10 +5,14 @@
 //   1. the largest connected component of the valid graph is partitioned recursively
 //      (recursive_partition.hpp: Louvain + RunGlobalEngine per community + consistency tests);
 //      views outside it are left alone (the final solve drops them anyway);
-//   2. for every pair of accepted subgraphs (k1 < k2 in acceptance order, so k1 is the earlier,
-//      usually larger one whose points place k2's views) joined by valid edges,
-//      AlignSubgraphPair decides the connecting edges and each removed edge is invalidated in
-//      the graph with InterSubgraphInvalidation (kInterSubgraphInconsistent + measured error).
+//   2. every pair of accepted subgraphs (k1 < k2 in acceptance order, so k1 is the earlier,
+//      usually larger one whose points place k2's views) joined by valid edges is aligned
+//      (AlignSubgraphPair, in parallel over pairs), which decides its connecting edges;
+//   3. the loops of aligned pairs are checked (subgraph_loop_consistency.hpp): a pair whose frame
+//      transform breaks more subgraph triangles than it closes loses all its connecting edges
+//      (kSubgraphLoopInconsistent);
+//   4. the removed edges are invalidated in the graph, the others with InterSubgraphInvalidation
+//      (kInterSubgraphInconsistent + measured error).
 // Edges inside an accepted subgraph are never touched.
 //
 // RunPrunedGlobalEngine (GLOBAL_PRUNED) = PruneViewGraph on a copy of the graph, then
@@ -21,6 +25,7 @@
 #include "sfm_pruning/global/global_engine.hpp"
 #include "sfm_pruning/pruning/recursive_partition.hpp"
 #include "sfm_pruning/pruning/subgraph_alignment.hpp"
+#include "sfm_pruning/pruning/subgraph_loop_consistency.hpp"
 
 namespace sfm_pruning {
 
@@ -33,6 +38,8 @@ struct ViewGraphPruningOptions {
   // nobody and the whole pair is cut (measured: 630 -> 205 edges, 14 of 36 views registered).
   // With the cap the fraction is lowered to max_sample_size / |E'| for that pair only.
   size_t max_sample_size = 4;
+  SubgraphLoopOptions loops;
+  int num_threads = 1;  // subgraph pairs aligned in parallel (the result does not depend on it)
 };
 
 struct SubgraphPairReport {
@@ -45,6 +52,12 @@ struct SubgraphPairReport {
   double beta = 1.0;
   std::vector<AlignmentHypothesis> hypotheses;  // RANSAC candidates (SubgraphAlignmentResult)
   int selected_hypothesis = -1;
+  // Loop check (aligned pairs only): the frame transform k2 -> k1, the triangles the pair is in,
+  // and whether the check rejected the whole pair.
+  Similarity3 k2_to_k1;
+  size_t consistent_triangles = 0;
+  size_t inconsistent_triangles = 0;
+  bool rejected_by_loops = false;
 };
 
 struct RemovedEdge {
@@ -59,6 +72,7 @@ struct ViewGraphPruningReport {
   RecursivePartitionResult partition;
   std::vector<SubgraphPairReport> pairs;  // connected pairs only, (k1, k2) order
   std::vector<RemovedEdge> removed_edges;  // pair order, then (i, j) order
+  std::vector<SubgraphTriangle> triangles;  // loops of aligned pairs (subgraph_loop_consistency.hpp)
   size_t num_input_edges = 0;   // valid edges before pruning
   size_t num_output_edges = 0;  // valid edges after pruning
   std::vector<StageTiming> timings;  // "subgraph partition", "inter-subgraph pruning"

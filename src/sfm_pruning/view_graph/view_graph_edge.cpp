@@ -14,6 +14,8 @@ std::string EdgeInvalidReasonName(EdgeInvalidReason reason) {
       return "rotation_residual";
     case EdgeInvalidReason::kInterSubgraphInconsistent:
       return "inter_subgraph_inconsistent";
+    case EdgeInvalidReason::kSubgraphLoopInconsistent:
+      return "subgraph_loop_inconsistent";
     case EdgeInvalidReason::kOther:
       return "other";
   }

@@ -19,6 +19,7 @@ enum class EdgeInvalidReason {
   kLowInlierRatio,             // value: inliers / putative matches
   kRotationResidual,           // value: deg between R_ij and the averaged rotations
   kInterSubgraphInconsistent,  // value: deg (or relative translation error) of the RANSAC vote
+  kSubgraphLoopInconsistent,   // value: inconsistent subgraph loops of its pair, threshold: consistent ones
   kOther,                      // any other stage; value is stage-defined
 };
 

@@ -22,9 +22,11 @@ void AddIntrinsicsOptions(CLI::App* cmd, IntrinsicsSettings* settings) {
   auto* group = cmd->add_option_group("Intrinsics");
   group
       ->add_option("--refine_intrinsics", settings->cameras,
-                   "Cameras whose intrinsics are estimated: GUESSED (the focal is only a guess: a COLMAP camera\n"
-                   "with prior_focal_length = 0, e.g. images without EXIF; OpenMVG intrinsics are trusted), ALL, NONE")
-      ->check(CLI::IsMember({"GUESSED", "ALL", "NONE"}))
+                   "Cameras whose intrinsics are estimated. AUTO: all but those calibrated with a K file; a\n"
+                   "camera whose focal is only a guess (COLMAP's prior_focal_length = 0, images without EXIF)\n"
+                   "is calibrated on the view graph and refined in full, one with an EXIF focal has focal and\n"
+                   "distortion refined. GUESSED: only the guessed ones. ALL: every camera in full. NONE")
+      ->check(CLI::IsMember({"AUTO", "GUESSED", "ALL", "NONE"}))
       ->capture_default_str();
   group
       ->add_option("--refine_focal", settings->focal,
@@ -44,20 +46,37 @@ void AddIntrinsicsOptions(CLI::App* cmd, IntrinsicsSettings* settings) {
 std::set<sfm_pruning::IndexT> RefinedIntrinsics(const IntrinsicsSettings& settings, const ReconstructionInput& input) {
   if (settings.cameras == "NONE") return {};
   if (settings.cameras == "GUESSED") return input.guessed_focal;
-  std::set<sfm_pruning::IndexT> all;
-  for (const auto& [intrinsic_id, intrinsics] : input.scene.intrinsics) all.insert(intrinsic_id);
-  return all;
+  std::set<sfm_pruning::IndexT> refined;
+  for (const auto& [intrinsic_id, intrinsics] : input.scene.intrinsics) {
+    if (settings.cameras == "ALL" || input.calibrated.count(intrinsic_id) == 0) refined.insert(intrinsic_id);
+  }
+  return refined;
+}
+
+std::set<sfm_pruning::IndexT> CalibratedOnViewGraph(const IntrinsicsSettings& settings,
+                                                    const ReconstructionInput& input) {
+  std::set<sfm_pruning::IndexT> refined = RefinedIntrinsics(settings, input);
+  if (settings.cameras != "AUTO") return refined;
+  std::set<sfm_pruning::IndexT> guessed;
+  for (const sfm_pruning::IndexT id : refined) {
+    if (input.guessed_focal.count(id) > 0) guessed.insert(id);
+  }
+  return guessed;
 }
 
 sfm_pruning::BundleAdjustmentOptions RefiningBundleOptions(const IntrinsicsSettings& settings,
-                                                           const sfm_pruning::SfmData& scene,
+                                                           const ReconstructionInput& input,
                                                            const std::set<sfm_pruning::IndexT>& refined) {
   sfm_pruning::BundleAdjustmentOptions bundle;
   bundle.refine_focal = settings.focal;
   bundle.refine_distortion = settings.distortion;
   bundle.refine_principal_point = settings.principal_point;
-  for (const auto& [intrinsic_id, intrinsics] : scene.intrinsics) {
-    if (refined.count(intrinsic_id) == 0) bundle.constant_intrinsics.insert(intrinsic_id);
+  for (const auto& [intrinsic_id, intrinsics] : input.scene.intrinsics) {
+    if (refined.count(intrinsic_id) == 0) {
+      bundle.constant_intrinsics.insert(intrinsic_id);
+    } else if (settings.cameras == "AUTO" && input.guessed_focal.count(intrinsic_id) == 0) {
+      bundle.constant_principal_point.insert(intrinsic_id);
+    }
   }
   return bundle;
 }

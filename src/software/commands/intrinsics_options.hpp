@@ -20,9 +20,16 @@ class App;
 namespace prunesfm {
 
 struct IntrinsicsSettings {
-  // Cameras whose intrinsics are estimated: GUESSED (the focal is a guess: a COLMAP camera with
-  // prior_focal_length = 0), ALL or NONE.
-  std::string cameras = "GUESSED";
+  // Cameras whose intrinsics are estimated:
+  //   AUTO (default): every camera but the calibrated ones (a K file). A camera whose focal is a
+  //     guess (COLMAP's prior_focal_length = 0, no EXIF) gets the whole treatment below; a camera
+  //     with a focal prior (EXIF) keeps its principal point and skips the view-graph calibration,
+  //     but its focal and distortion are refined in bundle adjustment, as COLMAP does: an EXIF
+  //     focal is rounded and says nothing of the lens distortion (books: k1 = −0.046 left out
+  //     costs 2–5° on every pair).
+  //   GUESSED: only the cameras with a guessed focal; ALL: every camera, the whole treatment;
+  //   NONE.
+  std::string cameras = "AUTO";
   // Which of their parameters. The focal is first calibrated on the view graph (fundamental
   // matrices), then every parameter chosen is refined in bundle adjustment. A guessed camera's
   // principal point is a guess too (the image centre), hence refined by default.
@@ -40,10 +47,15 @@ void AddIntrinsicsOptions(CLI::App* cmd, IntrinsicsSettings* settings);
 // The intrinsic ids whose parameters are estimated.
 std::set<sfm_pruning::IndexT> RefinedIntrinsics(const IntrinsicsSettings& settings, const ReconstructionInput& input);
 
+// Those of them whose focal is calibrated on the view graph before verification (AUTO: the ones
+// with a guessed focal).
+std::set<sfm_pruning::IndexT> CalibratedOnViewGraph(const IntrinsicsSettings& settings,
+                                                    const ReconstructionInput& input);
+
 // Bundle adjustment settings: the chosen parameters of the refined cameras, every other camera
 // held.
 sfm_pruning::BundleAdjustmentOptions RefiningBundleOptions(const IntrinsicsSettings& settings,
-                                                           const sfm_pruning::SfmData& scene,
+                                                           const ReconstructionInput& input,
                                                            const std::set<sfm_pruning::IndexT>& refined);
 
 // One progress line per calibrated camera (and one for the pairs left out).

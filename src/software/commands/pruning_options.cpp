@@ -85,6 +85,28 @@ void AddPruningOptions(CLI::App* cmd, sfm_pruning::ViewGraphPruningOptions* opti
                     "E_t: translation deviation of an edge as a fraction of |mean t|")
       ->check(CLI::PositiveNumber)
       ->capture_default_str();
+  group->add_option("--prune_refine_rounds", alignment.refine_rounds,
+                    "Refits of a RANSAC winner on its whole consensus (0: the paper's plain RANSAC)")
+      ->check(CLI::NonNegativeNumber)
+      ->capture_default_str();
+
+  // Loops of subgraph pairs (not in the paper; docs/pruning.md).
+  sfm_pruning::SubgraphLoopOptions& loops = options->loops;
+  group->add_option("--prune_subgraph_loops", loops.enabled,
+                    "Cut the pairs of subgraphs whose frame transform breaks more subgraph triangles than it closes")
+      ->capture_default_str();
+  group->add_option("--prune_loop_max_rotation_deg", loops.max_rotation_deg,
+                    "Subgraph triangle: largest rotation of the composed frame transforms")
+      ->check(CLI::PositiveNumber)
+      ->capture_default_str();
+  group->add_option("--prune_loop_max_translation", loops.max_translation_fraction,
+                    "Subgraph triangle: largest displacement, as a fraction of the triangle's mean side")
+      ->check(CLI::PositiveNumber)
+      ->capture_default_str();
+  group->add_option("--prune_loop_max_scale_ratio", loops.max_scale_ratio,
+                    "Subgraph triangle: largest scale change of the composed frame transforms")
+      ->check(CLI::Range(1.0, 1e9))
+      ->capture_default_str();
 }
 
 }  // namespace prunesfm

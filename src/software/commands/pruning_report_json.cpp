@@ -64,7 +64,20 @@ nlohmann::json PruningReportJson(const sfm_pruning::ViewGraphPruningReport& prun
                      {"edges", pair.num_edges},
                      {"voting_edges", pair.num_voting_edges},
                      {"removed_edges", pair.num_removed_edges},
-                     {"beta", pair.beta}});
+                     {"beta", pair.beta},
+                     {"frame_rotation_deg", RadToDeg(RotationAngleBetween(pair.k2_to_k1.rotation,
+                                                                          Eigen::Matrix3d::Identity()))},
+                     {"consistent_triangles", pair.consistent_triangles},
+                     {"inconsistent_triangles", pair.inconsistent_triangles},
+                     {"rejected_by_loops", pair.rejected_by_loops}});
+  }
+  nlohmann::json triangles = nlohmann::json::array();
+  for (const SubgraphTriangle& triangle : pruning.triangles) {
+    triangles.push_back({{"subgraphs", {triangle.a, triangle.b, triangle.c}},
+                         {"rotation_deg", triangle.rotation_deg},
+                         {"scale_ratio", triangle.scale_ratio},
+                         {"translation_fraction", triangle.translation_fraction},
+                         {"consistent", triangle.consistent}});
   }
   nlohmann::json removed = nlohmann::json::array();
   for (const RemovedEdge& edge : pruning.removed_edges) {
@@ -86,6 +99,7 @@ nlohmann::json PruningReportJson(const sfm_pruning::ViewGraphPruningReport& prun
           {"total_seconds", pruning.total_seconds},
           {"tree", std::move(nodes)},
           {"subgraph_pairs", std::move(pairs)},
+          {"subgraph_triangles", std::move(triangles)},
           {"removed_edges", std::move(removed)}};
 }
 

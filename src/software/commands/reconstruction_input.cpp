@@ -18,7 +18,9 @@ ReconstructionInput ReadOpenMvgInput(const std::filesystem::path& sfm_data, cons
   // `prunesfm init` says beside its sfm_data.json which focal lengths are only a guess.
   const std::filesystem::path priors = sfm_data.parent_path() / sfm_pruning::kCameraPriorsFileName;
   if (std::filesystem::exists(priors)) {
-    input.guessed_focal = sfm_pruning::ReadCameraPriors(priors).IntrinsicsWithGuessedFocal();
+    const sfm_pruning::CameraPriors camera_priors = sfm_pruning::ReadCameraPriors(priors);
+    input.guessed_focal = camera_priors.IntrinsicsWithGuessedFocal();
+    input.calibrated = camera_priors.IntrinsicsCalibrated();
   }
   input.features = sfm_pruning::ReadOpenMvgFeatures(input.scene, matches_dir, false, progress);
   const std::filesystem::path matches_file = sfm_pruning::FindOpenMvgMatchesFile(matches_dir, match_file);

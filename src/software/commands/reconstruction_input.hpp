@@ -24,6 +24,8 @@ struct ReconstructionInput {
   // Intrinsics whose focal is a guess (COLMAP's prior_focal_length = 0; `focal_trusted` false in
   // the camera_priors.json of `prunesfm init`); other OpenMVG intrinsics are trusted.
   std::set<sfm_pruning::IndexT> guessed_focal;
+  // Intrinsics the user calibrated (`prunesfm init --k_file`): never refined by default.
+  std::set<sfm_pruning::IndexT> calibrated;
 };
 
 // sfm_data.json (views + intrinsics; guessed focals from a camera_priors.json beside it), the

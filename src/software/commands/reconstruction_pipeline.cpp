@@ -231,7 +231,7 @@ Solution Solve(const EngineSettings& settings, const ReconstructionInput& input,
   solution.verify_seconds = SecondsSince(verify_start);
   Info("view graph: " + std::to_string(graph.NumValidEdges()) + " edges of " +
        std::to_string(solution.build.num_pairs) + " pairs, " + std::to_string(graph.NumNodes()) + " views");
-  const sfm_pruning::BundleAdjustmentOptions bundle = RefiningBundleOptions(settings.intrinsics, scene, refined);
+  const sfm_pruning::BundleAdjustmentOptions bundle = RefiningBundleOptions(settings.intrinsics, input, refined);
   if (settings.engine == "GLOBAL_PRUNED") {
     sfm_pruning::PrunedGlobalEngineOptions options = PrunedEngineOptions(settings);
     options.engine.bundle = bundle;  // the final solve; the per-community solves hold the intrinsics
@@ -261,8 +261,9 @@ void RunReconstruction(const EngineSettings& settings, const ReconstructionInput
   sfm_pruning::SfmData scene = input.scene;
   std::optional<sfm_pruning::FocalCalibrationReport> calibration;
   const auto calibration_start = std::chrono::steady_clock::now();
-  if (settings.intrinsics.focal && !refined.empty()) {
-    calibration = CalibrateFocals(settings, input, refined, &scene);
+  const std::set<sfm_pruning::IndexT> calibrated_on_graph = CalibratedOnViewGraph(settings.intrinsics, input);
+  if (settings.intrinsics.focal && !calibrated_on_graph.empty()) {
+    calibration = CalibrateFocals(settings, input, calibrated_on_graph, &scene);
     ReportCalibration(*calibration);
   }
   const double calibration_seconds = SecondsSince(calibration_start);

@@ -1,0 +1,91 @@
+// Loop consistency between subgraphs: the check across subgraph pairs that the per-pair RANSAC
+// (subgraph_alignment.hpp) cannot make. PruneSfM's addition to the paper (docs/pruning.md).
+//
+// Why: the inter-subgraph RANSAC keeps the largest mutually consistent set of a pair's edges.
+// Where every edge between two subgraphs is a doppelganger (books: the 42 edges between the two
+// sides of the desk corner all see the other copy of the same textbooks) those edges agree with
+// each other, form a perfect consensus and survive. What exposes them is a third subgraph: the
+// frame transforms around a loop of subgraphs must compose to the identity, and the wrong
+// transform breaks every loop it is part of while the right ones close.
+//
+// Each aligned pair (k1, k2) gives the similarity from k2's frame to k1's (scale β, rotation and
+// translation of the selected RANSAC hypothesis: SubgraphAlignmentResult::k2_to_k1). For every
+// triangle of aligned pairs (a, b, c) the loop S_ab · S_bc · S_ca is compared to the identity:
+//   rotation: its angle, at most max_rotation_deg;
+//   scale:    max(s, 1/s), at most max_scale_ratio;
+//   translation: how far it moves a's mean camera centre, as a fraction of the triangle's mean
+//             side length (distances between the three subgraph centres in a's frame, at least
+//             a's own radius), at most max_translation_fraction.
+// Rejection is greedy and deterministic: while some pair lies in more inconsistent triangles than
+// consistent ones, the pair with the largest (inconsistent − consistent) count is rejected (ties:
+// the smaller support, then the later pair), and the triangles are counted again without it. A
+// pair whose removal would disconnect the subgraphs is never rejected, and a pair in no triangle
+// cannot be judged (it is kept).
+#pragma once
+
+#include <cstddef>
+#include <vector>
+
+#include <Eigen/Core>
+
+#include "sfm_pruning/sfm/similarity.hpp"
+
+namespace sfm_pruning {
+
+struct SubgraphLoopOptions {
+  bool enabled = true;
+  // Measured on books (real images): the closing triangle turns by 1.6–3.1° and moves a's centre
+  // by 0.08–0.15 of its side, the triangles through the doppelganger pair by 53–55° and 1.4–1.5.
+  // The scale of a pair is the least certain part of its transform (it comes from the spread of
+  // the chained translations): a closing triangle's scale drifted to 1.42, hence the loose bound.
+  double max_rotation_deg = 5.0;
+  double max_scale_ratio = 2.0;
+  double max_translation_fraction = 0.25;
+};
+
+// A subgraph's mean camera centre and radius (median distance of its centres to the mean), in its
+// own frame: the translation error's reference length.
+struct SubgraphFrame {
+  Eigen::Vector3d centre = Eigen::Vector3d::Zero();
+  double radius = 0.0;
+};
+
+// One aligned subgraph pair: k1 < k2, X_k1 = k2_to_k1(X_k2); support = consensus edges.
+struct SubgraphLink {
+  int k1 = -1;
+  int k2 = -1;
+  Similarity3 k2_to_k1;
+  size_t support = 0;
+};
+
+struct SubgraphTriangle {
+  int a = -1, b = -1, c = -1;  // a < b < c, subgraph indices
+  double rotation_deg = 0.0;
+  double scale_ratio = 1.0;
+  double translation_fraction = 0.0;
+  bool consistent = true;
+};
+
+struct RejectedLink {
+  size_t link = 0;  // index into the links given
+  size_t inconsistent_triangles = 0;  // at the time of rejection
+  size_t consistent_triangles = 0;
+};
+
+struct SubgraphLoopResult {
+  std::vector<SubgraphTriangle> triangles;  // every triangle of the input links, (a, b, c) order
+  std::vector<RejectedLink> rejected;       // in rejection order
+};
+
+// The loop of a triangle a < b < c from its three links (a, b), (b, c), (a, c).
+SubgraphTriangle MeasureSubgraphTriangle(int a, int b, int c, const Similarity3& b_to_a, const Similarity3& c_to_b,
+                                         const Similarity3& c_to_a, const SubgraphFrame& frame_a,
+                                         const SubgraphFrame& frame_b, const SubgraphFrame& frame_c,
+                                         const SubgraphLoopOptions& options);
+
+// `frames` is indexed by subgraph; every link's k1, k2 must index it.
+SubgraphLoopResult FindLoopInconsistentLinks(const std::vector<SubgraphLink>& links,
+                                             const std::vector<SubgraphFrame>& frames,
+                                             const SubgraphLoopOptions& options = {});
+
+}  // namespace sfm_pruning
