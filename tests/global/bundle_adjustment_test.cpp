@@ -83,6 +83,37 @@ TEST(BundleAdjustment, RefinesPrincipalPoint) {
   }
 }
 
+// The weak priors on principal point and distortion leave well-observed values to the data, and
+// a strong prior holds them at the image centre and zero.
+TEST(BundleAdjustment, IntrinsicsPriorsWeighAgainstTheData) {
+  const Scene scene = NoisyScene();
+  const auto refine = [&](double sigma) {
+    SfmData data = scene.truth;
+    for (auto& [id, intrinsics] : data.intrinsics) {
+      intrinsics.SetPrincipalPoint(intrinsics.PrincipalPoint() + Eigen::Vector2d(12.0, -9.0));
+    }
+    BundleAdjustmentOptions options;
+    options.refine_principal_point = true;
+    options.refine_distortion = true;
+    options.principal_point_prior_sigma = sigma;
+    options.distortion_prior_sigma = sigma;
+    const BundleAdjustmentResult result = AdjustBundle(options, &data);
+    EXPECT_TRUE(result.success) << result.message;
+    return data;
+  };
+  const SfmData weak = refine(BundleAdjustmentOptions().principal_point_prior_sigma);
+  for (const auto& [id, intrinsics] : weak.intrinsics) {
+    EXPECT_LT((intrinsics.PrincipalPoint() - scene.truth.intrinsics.at(id).PrincipalPoint()).norm(), 2.0) << id;
+  }
+  EXPECT_NEAR(weak.intrinsics.at(1).DistortionParams()[0], -0.08, 0.01);
+  const SfmData strong = refine(1e-5);
+  for (const auto& [id, intrinsics] : strong.intrinsics) {
+    const Eigen::Vector2d centre(0.5 * (intrinsics.width() - 1.0), 0.5 * (intrinsics.height() - 1.0));
+    EXPECT_LT((intrinsics.PrincipalPoint() - centre).norm(), 0.5) << id;
+  }
+  EXPECT_LT(std::abs(strong.intrinsics.at(1).DistortionParams()[0]), 1e-3);
+}
+
 TEST(BundleAdjustment, SameInputGivesBitwiseSameOutput) {
   const SceneOptions scene_options = bundle_test::NoisySceneOptions(300);
   const Scene scene = bundle_test::MakeScene(scene_options);

@@ -7,6 +7,7 @@
 #include <vector>
 
 #include <ceres/ceres.h>
+#include <ceres/normal_prior.h>
 
 #include "sfm_pruning/global/bundle_observations.hpp"
 #include "sfm_pruning/global/bundle_parameters.hpp"
@@ -114,6 +115,39 @@ void SetIntrinsicsManifolds(const BundleAdjustmentOptions& options, const SfmDat
   }
 }
 
+// The weak priors of BundleAdjustmentOptions on the refined principal points and distortion
+// coefficients: one NormalPrior block per intrinsic, A (x - b) with A = diag(1 / sigma) over the
+// parameters that have a prior.
+void AddIntrinsicsPriors(const BundleAdjustmentOptions& options, const SfmData& data, BundleParameters* parameters,
+                         ceres::Problem* problem) {
+  for (const auto& [id, offset] : parameters->intrinsic_offsets()) {
+    const CameraIntrinsics& intrinsics = data.intrinsics.at(id);
+    if (!IsPinholeFamily(intrinsics.model()) || options.constant_intrinsics.count(id) > 0) continue;
+    double* block = parameters->intrinsics(id);
+    if (!problem->HasParameterBlock(block)) continue;
+    const std::vector<int> constant = ConstantIntrinsicParams(id, intrinsics.model(), options);
+    const int num_params = static_cast<int>(intrinsics.params().size());
+    const bool two_focals = intrinsics.model() == CameraModel::kPinholeFxFy;
+    const int first_principal = two_focals ? 2 : 1;
+    const int first_distortion = two_focals ? num_params : camera_models::kFirstDistortionParam;
+    const double pp_sigma = options.principal_point_prior_sigma * std::max(intrinsics.width(), intrinsics.height());
+    std::vector<std::pair<int, double>> rows;  // (parameter, 1 / sigma)
+    for (int k = first_principal; k < num_params; ++k) {
+      if (std::find(constant.begin(), constant.end(), k) != constant.end()) continue;
+      const bool principal = k < first_principal + 2;
+      const double sigma = principal ? pp_sigma : k >= first_distortion ? options.distortion_prior_sigma : 0.0;
+      if (sigma > 0.0) rows.emplace_back(k, 1.0 / sigma);
+    }
+    if (rows.empty()) continue;
+    ceres::Matrix A = ceres::Matrix::Zero(static_cast<Eigen::Index>(rows.size()), num_params);
+    ceres::Vector b = ceres::Vector::Zero(num_params);  // distortion: 0
+    b(first_principal) = 0.5 * (intrinsics.width() - 1.0);  // the image centre (pixel-centre convention)
+    b(first_principal + 1) = 0.5 * (intrinsics.height() - 1.0);
+    for (size_t r = 0; r < rows.size(); ++r) A(static_cast<Eigen::Index>(r), rows[r].first) = rows[r].second;
+    problem->AddResidualBlock(new ceres::NormalPrior(A, b), nullptr, block);
+  }
+}
+
 // One residual block per posed observation; returns the number of observations added.
 size_t AddResiduals(const BundleAdjustmentOptions& options, const SfmData& data, BundleParameters* parameters,
                     ceres::Problem* problem) {
@@ -194,6 +228,7 @@ BundleAdjustmentResult AdjustBundleUntimed(const BundleAdjustmentOptions& option
   }
   const IndexT gauge_pose = FixGauge(options, *sfm_data, &parameters, &problem);
   SetIntrinsicsManifolds(options, *sfm_data, &parameters, &problem);
+  AddIntrinsicsPriors(options, *sfm_data, &parameters, &problem);
   result.num_poses = parameters.num_poses();
   result.num_intrinsics = parameters.num_intrinsics();
   result.num_landmarks = parameters.landmark_ids().size();
