@@ -4,7 +4,8 @@ with its defaults, without recursion (one Louvain pass), without each consistenc
 e_r, e_t), with 20 / 30 / 40 RANSAC iterations, and with the paper's setting at the two points
 where PruneSfM deviates from it by default (the RANSAC sample capped at 4 edges, the match
 coverage that may overrule the largest consensus; docs/pruning.md) and without PruneSfM's two
-additions (the loop check across subgraph pairs, the refit of the RANSAC winner). GLOBAL on the
+additions (without the loop check across subgraph pairs; with the refit of the RANSAC winner,
+off by default). GLOBAL on the
 same database is the baseline row. AUC@3/5/10 against the ground truth, edges removed, wall time.
 
 Input: a synthetic scene's database that bench/run_benchmarks.py prepared in its --work folder
@@ -41,7 +42,7 @@ CONFIGS = [
     ("paper's vote and sample", "GLOBAL_PRUNED",
      ["--prune_hypothesis_selection", "largest_consensus", "--prune_max_sample_size", "0"]),
     ("without the loop check across subgraph pairs", "GLOBAL_PRUNED", ["--prune_subgraph_loops", "false"]),
-    ("without the refit of the RANSAC winner", "GLOBAL_PRUNED", ["--prune_refine_rounds", "0"]),
+    ("with a refit of the RANSAC winner (3 rounds)", "GLOBAL_PRUNED", ["--prune_refine_rounds", "3"]),
 ]
 
 
@@ -69,7 +70,8 @@ def run_config(args, prunesfm, database, gt, images, label, engine, extra, index
 
 def main():
     parser = bs.argument_parser(__doc__, "/tmp/prunesfm-ablation")
-    parser.add_argument("--scene", default="orbit_symmetric", help="synthetic scene prepared in --bench_work")
+    parser.add_argument("--scene", default="orbit_symmetric",
+                        help="synthetic scene prepared in --bench_work, or the name of the --database scene")
     parser.add_argument("--bench_work", default="/tmp/prunesfm-bench", help="bench/run_benchmarks.py's --work")
     parser.add_argument("--database", help="a COLMAP database instead of the synthetic scene's (with --ground_truth)")
     parser.add_argument("--ground_truth", help="with --database: the reference model or gt_cameras.txt")
@@ -78,7 +80,9 @@ def main():
     args = parser.parse_args()
     prunesfm = str(Path(args.prunesfm).resolve()) if args.prunesfm else str(rb.find_prunesfm(None))
     if args.database:
-        database, gt, images = Path(args.database), Path(args.ground_truth or ""), args.image_path
+        if not args.ground_truth or not args.image_path:
+            sys.exit("pruning_ablation: --database needs --ground_truth and --image_path")
+        database, gt, images = Path(args.database), Path(args.ground_truth), args.image_path
     else:
         scene_dir = Path(args.bench_work) / args.scene
         database, gt, images = scene_dir / "database.db", scene_dir / "ground_truth" / "gt_cameras.txt", None

@@ -131,7 +131,7 @@ def prunesfm_capabilities(prunesfm):
     run_help = ""
     if has_run:
         run_help = subprocess.run([str(prunesfm), "run", "--help"], capture_output=True, text=True).stdout
-    refine = sorted(set(re.findall(r"--[a-z_]*(?:refine|focal|principal)[a-z_]*", run_help)))
+    refine = sorted(set(re.findall(r"--(?:refine_[a-z_]+|[a-z_]*focal[a-z_]*)", run_help)))
     return {"run": has_run, "num_threads": "--num_threads" in run_help, "intrinsics_options": refine}
 
 
@@ -577,10 +577,11 @@ def write_markdown(path, meta, rows, scenes):
         options = meta["prunesfm_run_intrinsics_options"]
         if options:
             L.append(f"`prunesfm run` intrinsics options in this build: {', '.join(f'`{o}`' for o in options)}. "
-                     "By default (`--refine_intrinsics GUESSED`) a camera whose focal COLMAP only guessed "
+                     "By default (`--refine_intrinsics AUTO`) a camera whose focal COLMAP only guessed "
                      "(`prior_focal_length` = 0: these images have no EXIF, so every dataset's camera) gets its "
                      "focal calibrated from the fundamental matrices of the verified pairs (kept only when the "
-                     "pairs determine it), then focal, k1 and principal point refined in bundle adjustment; when "
+                     "pairs determine it), then focal, k1 and principal point refined in bundle adjustment under "
+                     "weak priors (principal point near the centre, k1 near 0; docs/global.md); when "
                      "that moves the focal by more than 5 % the pairs are verified and solved again with the refined "
                      "intrinsics (`first pass` in the breakdown). So the GLOBAL rows **refine the principal point**; "
                      "a `GLOBAL-PP` row, where present, is the same with `--refine_principal_point 0`, a `+K` row "

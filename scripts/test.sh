@@ -26,7 +26,7 @@ else
   build=build/sanitize
   echo "== ASan+UBSan build at -O1 (warnings are errors)"
   rm -rf "$build"
-  cmake -S . -B "$build" -G Ninja -DCMAKE_BUILD_TYPE=RelWithDebInfo -DCMAKE_CXX_FLAGS_RELWITHDEBINFO="-O1" \
+  cmake -S . -B "$build" -G Ninja -DCMAKE_BUILD_TYPE=RelWithDebInfo -DCMAKE_CXX_FLAGS_RELWITHDEBINFO="-O1 -g1" \
     -DPRUNESFM_SANITIZE=ON -DPRUNESFM_WARNINGS_AS_ERRORS=ON >/dev/null
 fi
 cmake --build "$build" -j "$jobs"

@@ -109,9 +109,9 @@ TEST(SubgraphLoops, AShiftAlongTheStreetBreaksTheLoopsThroughTranslationAlone) {
   }
 }
 
-TEST(SubgraphLoops, ASingleBrokenTriangleLosesItsWeakestPairAndBridgesStay) {
+TEST(SubgraphLoops, ASingleBrokenTriangleLosesItsWeakestPairAndPairsOutsideTrianglesStay) {
   const LoopScene scene(4);
-  // Triangle (0, 1, 2) with a wrong (1, 2), plus subgraph 3 hanging on a bridge (2, 3).
+  // Triangle (0, 1, 2) with a wrong (1, 2), plus subgraph 3 hanging on (2, 3), in no triangle.
   std::vector<SubgraphLink> links = {scene.Link(0, 1, 30), scene.Link(0, 2, 20),
                                      scene.Link(1, 2, 5, TurnAbout(scene.subgraphs[1].centre, 30.0)),
                                      scene.Link(2, 3, 1)};
@@ -120,6 +120,8 @@ TEST(SubgraphLoops, ASingleBrokenTriangleLosesItsWeakestPairAndBridgesStay) {
   EXPECT_FALSE(result.triangles[0].consistent);
   ASSERT_EQ(result.rejected.size(), 1u);  // one of the three must go; nothing can tell which but support
   EXPECT_EQ(result.rejected[0].link, 2u);
+  EXPECT_EQ(result.inconsistent_triangles, (std::vector<size_t>{1, 1, 1, 0}));
+  EXPECT_EQ(result.consistent_triangles, (std::vector<size_t>{0, 0, 0, 0}));
 }
 
 TEST(SubgraphLoops, SwitchedOffItMeasuresButRejectsNothing) {

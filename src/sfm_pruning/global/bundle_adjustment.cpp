@@ -16,19 +16,33 @@
 namespace sfm_pruning {
 namespace {
 
-// Indices of the intrinsic parameters (camera_models.hpp layouts) held constant.
-std::vector<int> ConstantIntrinsicParams(IndexT id, CameraModel model, const BundleAdjustmentOptions& options) {
-  const int num_params = static_cast<int>(NumCameraParams(model));
+// Where a pinhole-family model's parameter block (camera_models.hpp layouts) has its principal
+// point (2 values) and its distortion coefficients (to the end; none for pinhole_fx_fy).
+struct IntrinsicLayout {
+  int num_params = 0;
+  int first_principal = 1;
+  int first_distortion = 0;
+};
+
+IntrinsicLayout LayoutOf(CameraModel model) {
+  IntrinsicLayout layout;
+  layout.num_params = static_cast<int>(NumCameraParams(model));
   const bool two_focals = model == CameraModel::kPinholeFxFy;
-  const int first_principal = two_focals ? 2 : 1;
-  const int first_distortion = two_focals ? num_params : camera_models::kFirstDistortionParam;
+  layout.first_principal = two_focals ? 2 : 1;
+  layout.first_distortion = two_focals ? layout.num_params : camera_models::kFirstDistortionParam;
+  return layout;
+}
+
+// Indices of the intrinsic parameters held constant.
+std::vector<int> ConstantIntrinsicParams(IndexT id, CameraModel model, const BundleAdjustmentOptions& options) {
+  const IntrinsicLayout layout = LayoutOf(model);
   std::vector<int> constant;
-  for (int k = 0; k < num_params; ++k) {
-    const bool refine = k < first_principal       ? options.refine_focal
-                        : k < first_principal + 2 ? options.refine_principal_point &&
-                                                        options.constant_principal_point.count(id) == 0
-                        : k >= first_distortion   ? options.refine_distortion
-                                                  : false;
+  for (int k = 0; k < layout.num_params; ++k) {
+    const bool refine = k < layout.first_principal       ? options.refine_focal
+                        : k < layout.first_principal + 2 ? options.refine_principal_point &&
+                                                               options.constant_principal_point.count(id) == 0
+                        : k >= layout.first_distortion   ? options.refine_distortion
+                                                         : false;
     if (!refine) constant.push_back(k);
   }
   return constant;
@@ -126,23 +140,22 @@ void AddIntrinsicsPriors(const BundleAdjustmentOptions& options, const SfmData& 
     double* block = parameters->intrinsics(id);
     if (!problem->HasParameterBlock(block)) continue;
     const std::vector<int> constant = ConstantIntrinsicParams(id, intrinsics.model(), options);
-    const int num_params = static_cast<int>(intrinsics.params().size());
-    const bool two_focals = intrinsics.model() == CameraModel::kPinholeFxFy;
-    const int first_principal = two_focals ? 2 : 1;
-    const int first_distortion = two_focals ? num_params : camera_models::kFirstDistortionParam;
+    const IntrinsicLayout layout = LayoutOf(intrinsics.model());
     const double pp_sigma = options.principal_point_prior_sigma * std::max(intrinsics.width(), intrinsics.height());
     std::vector<std::pair<int, double>> rows;  // (parameter, 1 / sigma)
-    for (int k = first_principal; k < num_params; ++k) {
+    for (int k = layout.first_principal; k < layout.num_params; ++k) {
       if (std::find(constant.begin(), constant.end(), k) != constant.end()) continue;
-      const bool principal = k < first_principal + 2;
-      const double sigma = principal ? pp_sigma : k >= first_distortion ? options.distortion_prior_sigma : 0.0;
+      const bool principal = k < layout.first_principal + 2;
+      const double sigma = principal                        ? pp_sigma
+                           : k >= layout.first_distortion ? options.distortion_prior_sigma
+                                                           : 0.0;
       if (sigma > 0.0) rows.emplace_back(k, 1.0 / sigma);
     }
     if (rows.empty()) continue;
-    ceres::Matrix A = ceres::Matrix::Zero(static_cast<Eigen::Index>(rows.size()), num_params);
-    ceres::Vector b = ceres::Vector::Zero(num_params);  // distortion: 0
-    b(first_principal) = 0.5 * (intrinsics.width() - 1.0);  // the image centre (pixel-centre convention)
-    b(first_principal + 1) = 0.5 * (intrinsics.height() - 1.0);
+    ceres::Matrix A = ceres::Matrix::Zero(static_cast<Eigen::Index>(rows.size()), layout.num_params);
+    ceres::Vector b = ceres::Vector::Zero(layout.num_params);  // distortion: 0
+    b(layout.first_principal) = 0.5 * (intrinsics.width() - 1.0);  // the image centre (pixel-centre convention)
+    b(layout.first_principal + 1) = 0.5 * (intrinsics.height() - 1.0);
     for (size_t r = 0; r < rows.size(); ++r) A(static_cast<Eigen::Index>(r), rows[r].first) = rows[r].second;
     problem->AddResidualBlock(new ceres::NormalPrior(A, b), nullptr, block);
   }

@@ -15,7 +15,7 @@ std::set<IndexT> CameraPriors::IntrinsicsWithGuessedFocal() const {
   return ids;
 }
 
-std::set<IndexT> CameraPriors::IntrinsicsCalibrated() const {
+std::set<IndexT> CameraPriors::IntrinsicsFromKFile() const {
   std::set<IndexT> ids;
   for (const CameraPrior& camera : cameras) {
     if (camera.focal_source == "k_file") ids.insert(camera.intrinsic_id);  // FocalSourceName(kKFile)

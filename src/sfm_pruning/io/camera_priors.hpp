@@ -39,7 +39,7 @@ struct CameraPriors {
   // Intrinsic ids whose focal is a guess (the calibration's input).
   std::set<IndexT> IntrinsicsWithGuessedFocal() const;
   // Intrinsic ids whose whole K came from a calibration file (focal_source "k_file").
-  std::set<IndexT> IntrinsicsCalibrated() const;
+  std::set<IndexT> IntrinsicsFromKFile() const;
 };
 
 inline constexpr char kCameraPriorsFileName[] = "camera_priors.json";

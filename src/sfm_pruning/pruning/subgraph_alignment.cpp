@@ -174,7 +174,8 @@ double CoverageScore(const Consensus& consensus, const std::vector<EdgeCoverage>
 // Runs RANSAC over the voting edges and writes the verdicts of the voters into `result`.
 // kLargestConsensus keeps the first run's winner (the paper). kMatchCoverage runs RANSAC again on
 // the edges outside every consensus found so far (up to max_hypotheses candidates) and keeps the
-// candidate with the best coverage score.
+// largest candidate that its coverage score does not rule out (the largest of all if it rules out
+// every one).
 void RunRansac(const std::vector<ChainedRelativePose>& chains, const std::vector<EdgeCoverage>& coverage,
                const std::vector<size_t>& voter_edge_index, const Options& options, SubgraphAlignmentResult* result) {
   const size_t n = chains.size();
@@ -349,7 +350,9 @@ SubgraphAlignmentResult AlignSubgraphPair(const ViewGraph& graph, const Subgraph
     return result;
   }
   RunRansac(chains, coverage, voter_edge_index, options, &result);
-  if (result.status == SubgraphAlignmentStatus::kAligned) {
+  if (result.status == SubgraphAlignmentStatus::kAligned &&
+      options.scale_application == ScaleApplication::kSubgraphFrame) {
+    result.has_frame_transform = true;
     result.k2_to_k1 =
         FrameSimilarityOfChain(mean_k1, mean_k2, result.mean_rotation, result.mean_translation, result.beta);
   }

@@ -5,30 +5,7 @@
 #include <map>
 #include <utility>
 
-#include "sfm_pruning/view_graph/union_find.hpp"
-
 namespace sfm_pruning {
-namespace {
-
-using LinkKey = std::pair<int, int>;  // (k1, k2), k1 < k2
-
-// True when the links still marked active connect every subgraph the active links touched
-// before `removed` was taken out, i.e. `removed` is not a bridge.
-bool StaysConnectedWithout(const std::vector<SubgraphLink>& links, const std::vector<bool>& active, size_t removed,
-                           size_t num_subgraphs) {
-  UnionFind<size_t> with(num_subgraphs);
-  UnionFind<size_t> without(num_subgraphs);
-  for (size_t l = 0; l < links.size(); ++l) {
-    if (!active[l]) continue;
-    const auto k1 = static_cast<size_t>(links[l].k1);
-    const auto k2 = static_cast<size_t>(links[l].k2);
-    with.Union(k1, k2);
-    if (l != removed) without.Union(k1, k2);
-  }
-  return with.NumSets() == without.NumSets();
-}
-
-}  // namespace
 
 SubgraphTriangle MeasureSubgraphTriangle(int a, int b, int c, const Similarity3& b_to_a, const Similarity3& c_to_b,
                                          const Similarity3& c_to_a, const SubgraphFrame& frame_a,
@@ -59,7 +36,7 @@ SubgraphLoopResult FindLoopInconsistentLinks(const std::vector<SubgraphLink>& li
                                              const std::vector<SubgraphFrame>& frames,
                                              const SubgraphLoopOptions& options) {
   SubgraphLoopResult result;
-  std::map<LinkKey, size_t> link_of;
+  std::map<std::pair<int, int>, size_t> link_of;  // (k1, k2) -> link
   for (size_t l = 0; l < links.size(); ++l) link_of[{links[l].k1, links[l].k2}] = l;
 
   // Every triangle once, with the indices of its three links.
@@ -80,12 +57,13 @@ SubgraphLoopResult FindLoopInconsistentLinks(const std::vector<SubgraphLink>& li
           frames[static_cast<size_t>(a)], frames[static_cast<size_t>(b)], frames[static_cast<size_t>(c)], options));
     }
   }
-  if (!options.enabled || loops.empty()) return result;
-
+  // Triangles per link among the links still active.
   std::vector<bool> active(links.size(), true);
-  while (true) {
-    std::vector<size_t> bad(links.size(), 0);
-    std::vector<size_t> good(links.size(), 0);
+  std::vector<size_t> bad;
+  std::vector<size_t> good;
+  const auto count_triangles = [&]() {
+    bad.assign(links.size(), 0);
+    good.assign(links.size(), 0);
     for (size_t t = 0; t < loops.size(); ++t) {
       const Loop& loop = loops[t];
       if (!active[loop.ab] || !active[loop.bc] || !active[loop.ac]) continue;
@@ -94,10 +72,16 @@ SubgraphLoopResult FindLoopInconsistentLinks(const std::vector<SubgraphLink>& li
       ++count[loop.bc];
       ++count[loop.ac];
     }
+  };
+  count_triangles();
+  result.consistent_triangles = good;
+  result.inconsistent_triangles = bad;
+  if (!options.enabled) return result;
+
+  while (true) {
     int best = -1;
     for (size_t l = 0; l < links.size(); ++l) {
       if (!active[l] || bad[l] <= good[l]) continue;
-      if (!StaysConnectedWithout(links, active, l, frames.size())) continue;
       if (best < 0) {
         best = static_cast<int>(l);
         continue;
@@ -113,6 +97,7 @@ SubgraphLoopResult FindLoopInconsistentLinks(const std::vector<SubgraphLink>& li
     const auto rejected = static_cast<size_t>(best);
     active[rejected] = false;
     result.rejected.push_back({rejected, bad[rejected], good[rejected]});
+    count_triangles();
   }
   return result;
 }

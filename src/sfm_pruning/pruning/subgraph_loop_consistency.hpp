@@ -19,8 +19,8 @@
 // Rejection is greedy and deterministic: while some pair lies in more inconsistent triangles than
 // consistent ones, the pair with the largest (inconsistent − consistent) count is rejected (ties:
 // the smaller support, then the later pair), and the triangles are counted again without it. A
-// pair whose removal would disconnect the subgraphs is never rejected, and a pair in no triangle
-// cannot be judged (it is kept).
+// pair in no triangle cannot be judged (it is kept); a rejected pair always lies in a triangle
+// whose two other pairs stay, so a rejection never disconnects the subgraphs.
 #pragma once
 
 #include <cstddef>
@@ -74,7 +74,10 @@ struct RejectedLink {
 
 struct SubgraphLoopResult {
   std::vector<SubgraphTriangle> triangles;  // every triangle of the input links, (a, b, c) order
-  std::vector<RejectedLink> rejected;       // in rejection order
+  // Per input link, the triangles it is in before any rejection.
+  std::vector<size_t> consistent_triangles;
+  std::vector<size_t> inconsistent_triangles;
+  std::vector<RejectedLink> rejected;  // in rejection order
 };
 
 // The loop of a triangle a < b < c from its three links (a, b), (b, c), (a, c).

@@ -49,7 +49,8 @@ SubgraphAlignmentOptions PairAlignmentOptions(const ViewGraphPruningOptions& opt
 SubgraphFrame FrameOfSubgraph(const SubgraphSolution& solution) {
   SubgraphFrame frame;
   if (solution.poses.empty()) return frame;
-  frame.centre = SubgraphMeanPose(solution).center;
+  for (const auto& [view_id, pose] : solution.poses) frame.centre += pose.center;
+  frame.centre /= static_cast<double>(solution.poses.size());
   std::vector<double> distances;
   for (const auto& [view_id, pose] : solution.poses) distances.push_back((pose.center - frame.centre).norm());
   frame.radius = Median(std::move(distances));
@@ -94,7 +95,7 @@ void PruneViewGraph(const ViewGraphPruningOptions& options, ViewGraph* graph, co
   std::vector<SubgraphLink> links;
   std::vector<size_t> pair_of_link;
   for (size_t p = 0; p < pairs.size(); ++p) {
-    if (alignments[p].status != SubgraphAlignmentStatus::kAligned) continue;
+    if (!alignments[p].has_frame_transform) continue;
     links.push_back({pairs[p].first, pairs[p].second, alignments[p].k2_to_k1, alignments[p].consensus_size});
     pair_of_link.push_back(p);
   }
@@ -104,16 +105,10 @@ void PruneViewGraph(const ViewGraphPruningOptions& options, ViewGraph* graph, co
   out.triangles = loops.triangles;
   std::map<size_t, RejectedLink> rejected_pairs;
   for (const RejectedLink& rejected : loops.rejected) rejected_pairs[pair_of_link[rejected.link]] = rejected;
+  std::map<size_t, size_t> link_of_pair;
+  for (size_t l = 0; l < pair_of_link.size(); ++l) link_of_pair[pair_of_link[l]] = l;
 
   // 4. The decisions applied to the graph.
-  std::map<std::pair<int, int>, std::pair<size_t, size_t>> triangle_counts;  // (consistent, inconsistent)
-  for (const SubgraphTriangle& triangle : loops.triangles) {
-    for (const auto& key : {std::make_pair(triangle.a, triangle.b), std::make_pair(triangle.b, triangle.c),
-                            std::make_pair(triangle.a, triangle.c)}) {
-      auto& count = triangle_counts[key];
-      (triangle.consistent ? count.first : count.second) += 1;
-    }
-  }
   for (size_t p = 0; p < pairs.size(); ++p) {
     const auto [k1, k2] = pairs[p];
     SubgraphAlignmentResult& alignment = alignments[p];
@@ -133,11 +128,12 @@ void PruneViewGraph(const ViewGraphPruningOptions& options, ViewGraph* graph, co
     pair_report.beta = alignment.beta;
     pair_report.hypotheses = alignment.hypotheses;
     pair_report.selected_hypothesis = alignment.selected_hypothesis;
+    pair_report.has_frame_transform = alignment.has_frame_transform;
     pair_report.k2_to_k1 = alignment.k2_to_k1;
-    const auto counts = triangle_counts.find(pairs[p]);
-    if (counts != triangle_counts.end()) {
-      pair_report.consistent_triangles = counts->second.first;
-      pair_report.inconsistent_triangles = counts->second.second;
+    const auto link = link_of_pair.find(p);
+    if (link != link_of_pair.end()) {
+      pair_report.consistent_triangles = loops.consistent_triangles[link->second];
+      pair_report.inconsistent_triangles = loops.inconsistent_triangles[link->second];
     }
     pair_report.rejected_by_loops = rejected != rejected_pairs.end();
     for (const InterSubgraphEdgeDecision& decision : alignment.edges) {

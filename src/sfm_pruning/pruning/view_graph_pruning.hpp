@@ -11,8 +11,9 @@
 //   3. the loops of aligned pairs are checked (subgraph_loop_consistency.hpp): a pair whose frame
 //      transform breaks more subgraph triangles than it closes loses all its connecting edges
 //      (kSubgraphLoopInconsistent);
-//   4. the removed edges are invalidated in the graph, the others with InterSubgraphInvalidation
-//      (kInterSubgraphInconsistent + measured error).
+//   4. the removed edges are invalidated in the graph: those of a loop-rejected pair with
+//      kSubgraphLoopInconsistent, the others with InterSubgraphInvalidation
+//      (kInterSubgraphInconsistent + the measured error).
 // Edges inside an accepted subgraph are never touched.
 //
 // RunPrunedGlobalEngine (GLOBAL_PRUNED) = PruneViewGraph on a copy of the graph, then
@@ -52,8 +53,9 @@ struct SubgraphPairReport {
   double beta = 1.0;
   std::vector<AlignmentHypothesis> hypotheses;  // RANSAC candidates (SubgraphAlignmentResult)
   int selected_hypothesis = -1;
-  // Loop check (aligned pairs only): the frame transform k2 -> k1, the triangles the pair is in,
-  // and whether the check rejected the whole pair.
+  // Loop check (pairs with a frame transform only): the transform k2 -> k1, the triangles the pair
+  // is in before any rejection, and whether the check rejected the whole pair.
+  bool has_frame_transform = false;
   Similarity3 k2_to_k1;
   size_t consistent_triangles = 0;
   size_t inconsistent_triangles = 0;

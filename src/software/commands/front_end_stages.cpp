@@ -60,9 +60,9 @@ sfm_pruning::PairSet SelectPairs(const MatchSettings& settings, const sfm_prunin
 }  // namespace
 
 void AddInitOptions(CLI::App* cmd, InitSettings* settings) {
-  cmd->add_option("--focal", settings->focal, "Focal length in pixels of every camera (trusted)")
+  cmd->add_option("--focal", settings->focal, "Focal length in pixels of every camera (a prior: refined in bundle adjustment like an EXIF focal)")
       ->check(CLI::PositiveNumber);
-  cmd->add_option("--k_file", settings->k_file, "K matrix file (9 numbers, e.g. Strecha's K.txt): focal and principal point (trusted)")
+  cmd->add_option("--k_file", settings->k_file, "K matrix file (9 numbers, e.g. Strecha's K.txt): focal and principal point (a calibration: held)")
       ->check(CLI::ExistingFile);
   cmd->add_option("--sensor_width", settings->sensor_width_mm,
                   "Sensor width in mm, used with the EXIF focal in mm before the 35 mm equivalent")

@@ -30,8 +30,8 @@ void AddIntrinsicsOptions(CLI::App* cmd, IntrinsicsSettings* settings) {
       ->capture_default_str();
   group
       ->add_option("--refine_focal", settings->focal,
-                   "For those cameras: calibrate the focal from the view graph's fundamental matrices before\n"
-                   "verification, then refine it in bundle adjustment")
+                   "For those cameras: refine the focal in bundle adjustment, after calibrating it from the view\n"
+                   "graph's fundamental matrices before verification when it is only a guess")
       ->capture_default_str();
   group
       ->add_option("--refine_distortion", settings->distortion,
@@ -48,12 +48,12 @@ std::set<sfm_pruning::IndexT> RefinedIntrinsics(const IntrinsicsSettings& settin
   if (settings.cameras == "GUESSED") return input.guessed_focal;
   std::set<sfm_pruning::IndexT> refined;
   for (const auto& [intrinsic_id, intrinsics] : input.scene.intrinsics) {
-    if (settings.cameras == "ALL" || input.calibrated.count(intrinsic_id) == 0) refined.insert(intrinsic_id);
+    if (settings.cameras == "ALL" || input.k_file_intrinsics.count(intrinsic_id) == 0) refined.insert(intrinsic_id);
   }
   return refined;
 }
 
-std::set<sfm_pruning::IndexT> CalibratedOnViewGraph(const IntrinsicsSettings& settings,
+std::set<sfm_pruning::IndexT> FocalsToCalibrate(const IntrinsicsSettings& settings,
                                                     const ReconstructionInput& input) {
   std::set<sfm_pruning::IndexT> refined = RefinedIntrinsics(settings, input);
   if (settings.cameras != "AUTO") return refined;

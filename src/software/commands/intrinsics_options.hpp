@@ -48,8 +48,8 @@ void AddIntrinsicsOptions(CLI::App* cmd, IntrinsicsSettings* settings);
 std::set<sfm_pruning::IndexT> RefinedIntrinsics(const IntrinsicsSettings& settings, const ReconstructionInput& input);
 
 // Those of them whose focal is calibrated on the view graph before verification (AUTO: the ones
-// with a guessed focal).
-std::set<sfm_pruning::IndexT> CalibratedOnViewGraph(const IntrinsicsSettings& settings,
+// with a guessed focal; GUESSED and ALL: all of them).
+std::set<sfm_pruning::IndexT> FocalsToCalibrate(const IntrinsicsSettings& settings,
                                                     const ReconstructionInput& input);
 
 // Bundle adjustment settings: the chosen parameters of the refined cameras, every other camera

@@ -89,10 +89,10 @@ void RunPrune(const PruneArguments& args) {
   // Cameras whose focal is a guess (COLMAP's prior_focal_length = 0) are calibrated on the view
   // graph first, as `run` does: relative poses verified with a wrong focal mislead the pruning.
   sfm_pruning::SfmData scene = input.scene;
-  const std::set<sfm_pruning::IndexT> guessed = CalibratedOnViewGraph(args.settings.intrinsics, input);
+  const std::set<sfm_pruning::IndexT> to_calibrate = FocalsToCalibrate(args.settings.intrinsics, input);
   nlohmann::json calibration;
-  if (!guessed.empty()) {
-    const sfm_pruning::FocalCalibrationReport report = CalibrateFocals(args.settings, input, guessed, &scene);
+  if (!to_calibrate.empty()) {
+    const sfm_pruning::FocalCalibrationReport report = CalibrateFocals(args.settings, input, to_calibrate, &scene);
     ReportCalibration(report);
     calibration = CalibrationJson(report);
   }

@@ -65,11 +65,13 @@ nlohmann::json PruningReportJson(const sfm_pruning::ViewGraphPruningReport& prun
                      {"voting_edges", pair.num_voting_edges},
                      {"removed_edges", pair.num_removed_edges},
                      {"beta", pair.beta},
-                     {"frame_rotation_deg", RadToDeg(RotationAngleBetween(pair.k2_to_k1.rotation,
-                                                                          Eigen::Matrix3d::Identity()))},
                      {"consistent_triangles", pair.consistent_triangles},
                      {"inconsistent_triangles", pair.inconsistent_triangles},
                      {"rejected_by_loops", pair.rejected_by_loops}});
+    if (pair.has_frame_transform) {
+      pairs.back()["frame_rotation_deg"] =
+          RadToDeg(RotationAngleBetween(pair.k2_to_k1.rotation, Eigen::Matrix3d::Identity()));
+    }
   }
   nlohmann::json triangles = nlohmann::json::array();
   for (const SubgraphTriangle& triangle : pruning.triangles) {

@@ -20,7 +20,7 @@ ReconstructionInput ReadOpenMvgInput(const std::filesystem::path& sfm_data, cons
   if (std::filesystem::exists(priors)) {
     const sfm_pruning::CameraPriors camera_priors = sfm_pruning::ReadCameraPriors(priors);
     input.guessed_focal = camera_priors.IntrinsicsWithGuessedFocal();
-    input.calibrated = camera_priors.IntrinsicsCalibrated();
+    input.k_file_intrinsics = camera_priors.IntrinsicsFromKFile();
   }
   input.features = sfm_pruning::ReadOpenMvgFeatures(input.scene, matches_dir, false, progress);
   const std::filesystem::path matches_file = sfm_pruning::FindOpenMvgMatchesFile(matches_dir, match_file);

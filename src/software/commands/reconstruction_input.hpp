@@ -22,10 +22,10 @@ struct ReconstructionInput {
   sfm_pruning::PairwiseMatches putative;  // to verify (used when `verified` is empty)
   sfm_pruning::VerifiedPairs verified;    // COLMAP two_view_geometries
   // Intrinsics whose focal is a guess (COLMAP's prior_focal_length = 0; `focal_trusted` false in
-  // the camera_priors.json of `prunesfm init`); other OpenMVG intrinsics are trusted.
+  // the camera_priors.json of `prunesfm init`); the others carry a focal prior (EXIF, --focal).
   std::set<sfm_pruning::IndexT> guessed_focal;
   // Intrinsics the user calibrated (`prunesfm init --k_file`): never refined by default.
-  std::set<sfm_pruning::IndexT> calibrated;
+  std::set<sfm_pruning::IndexT> k_file_intrinsics;
 };
 
 // sfm_data.json (views + intrinsics; guessed focals from a camera_priors.json beside it), the

@@ -261,9 +261,9 @@ void RunReconstruction(const EngineSettings& settings, const ReconstructionInput
   sfm_pruning::SfmData scene = input.scene;
   std::optional<sfm_pruning::FocalCalibrationReport> calibration;
   const auto calibration_start = std::chrono::steady_clock::now();
-  const std::set<sfm_pruning::IndexT> calibrated_on_graph = CalibratedOnViewGraph(settings.intrinsics, input);
-  if (settings.intrinsics.focal && !calibrated_on_graph.empty()) {
-    calibration = CalibrateFocals(settings, input, calibrated_on_graph, &scene);
+  const std::set<sfm_pruning::IndexT> focals_to_calibrate = FocalsToCalibrate(settings.intrinsics, input);
+  if (settings.intrinsics.focal && !focals_to_calibrate.empty()) {
+    calibration = CalibrateFocals(settings, input, focals_to_calibrate, &scene);
     ReportCalibration(*calibration);
   }
   const double calibration_seconds = SecondsSince(calibration_start);
