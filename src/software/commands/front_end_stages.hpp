@@ -34,7 +34,7 @@ struct InitSettings {
 
 struct FeatureSettings {
   int max_features = 8192;
-  int max_image_size = 3200;
+  int max_image_size = 1600;  // SiftOptions::max_image_size
   bool no_root_sift = false;
 };
 
