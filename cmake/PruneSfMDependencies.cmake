@@ -10,6 +10,10 @@ find_package(SQLite3 REQUIRED)                              # SQLite::SQLite3
 find_package(TBB REQUIRED)                                  # TBB::tbb
 find_package(CLI11 REQUIRED)                                # CLI11::CLI11
 find_package(nlohmann_json 3 REQUIRED)                      # nlohmann_json::nlohmann_json
+# BLAS by its generic name (-lblas = libblas.so.3), not a vendor's library: Debian's alternatives
+# then decide at run time, and install_deps.sh installs OpenBLAS, which takes precedence.
+set(BLA_VENDOR Generic)
+find_package(BLAS REQUIRED)                                 # BLAS::BLAS
 find_package(PkgConfig REQUIRED)
 pkg_check_modules(LIBEXIF REQUIRED IMPORTED_TARGET libexif) # PkgConfig::LIBEXIF
 if(PRUNESFM_BUILD_TESTS)

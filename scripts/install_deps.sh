@@ -10,6 +10,7 @@ packages=(
   libigraph-dev libarpack2-dev libglpk-dev libplfit-dev libgmp-dev
   libsqlite3-dev libcli11-dev nlohmann-json3-dev libtbb-dev libexif-dev
   sqlite3 python3
+  libblas-dev libopenblas0-serial  # the BLAS behind libblas.so.3 (alternatives): brute-force matching and CHOLMOD, docs/dependencies.md
   chromium  # headless browser of the report's page test (tests/report/browser_test.cpp)
 )
 # Interop peers: the real COLMAP 3.8, used by tests/interop and bench/.

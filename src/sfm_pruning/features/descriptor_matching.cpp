@@ -5,10 +5,10 @@
 #include <memory>
 #include <vector>
 
-#include <Eigen/Core>
 #include <opencv2/core.hpp>
 #include <opencv2/flann.hpp>
 
+#include "sfm_pruning/util/blas_product.hpp"
 #include "sfm_pruning/util/parallel_for.hpp"
 
 namespace sfm_pruning {
@@ -63,36 +63,32 @@ std::vector<NearestTwo> FlannQuery(const FlannView& target, const cv::Mat& queri
   return result;
 }
 
-using RowMatrix = Eigen::Matrix<float, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor>;
-
-RowMatrix ToEigen(const std::vector<Descriptor>& descriptors) {
-  RowMatrix m(static_cast<Eigen::Index>(descriptors.size()), kDescriptorSize);
-  for (Eigen::Index r = 0; r < m.rows(); ++r) {
-    for (int d = 0; d < kDescriptorSize; ++d) m(r, d) = descriptors[static_cast<size_t>(r)][d];
-  }
-  return m;
-}
-
-// Exact nearest two in both directions from all squared distances |a|^2 + |b|^2 - 2 a.b, computed
-// a block of rows at a time so that memory stays at block x |b| floats.
-void BruteForceNearest(const std::vector<Descriptor>& a, const std::vector<Descriptor>& b,
-                       std::vector<NearestTwo>* a_to_b, std::vector<NearestTwo>* b_to_a) {
-  a_to_b->assign(a.size(), {});
-  b_to_a->assign(b.size(), {});
-  if (a.empty() || b.empty()) return;
-  const RowMatrix A = ToEigen(a);
-  const RowMatrix B = ToEigen(b);
-  const Eigen::VectorXf a_norms = A.rowwise().squaredNorm();
-  const Eigen::VectorXf b_norms = B.rowwise().squaredNorm();
-  constexpr Eigen::Index kBlock = 512;
-  for (Eigen::Index start = 0; start < A.rows(); start += kBlock) {
-    const Eigen::Index rows = std::min(kBlock, A.rows() - start);
-    const RowMatrix dots = A.middleRows(start, rows) * B.transpose();
-    for (Eigen::Index r = 0; r < rows; ++r) {
-      const int i = static_cast<int>(start + r);
-      for (Eigen::Index c = 0; c < dots.cols(); ++c) {
-        const float distance = std::max(0.f, a_norms(start + r) + b_norms(c) - 2.f * dots(r, c));
-        (*a_to_b)[static_cast<size_t>(i)].Offer(static_cast<int>(c), distance);
+// Exact nearest two in both directions from all squared distances |a|^2 + |b|^2 - 2 a.b. The dot
+// products come from BLAS a block of rows at a time, so that memory stays at block x |b| floats.
+void BruteForceNearest(const cv::Mat& a, const cv::Mat& b, std::vector<NearestTwo>* a_to_b,
+                       std::vector<NearestTwo>* b_to_a) {
+  a_to_b->assign(static_cast<size_t>(a.rows), {});
+  b_to_a->assign(static_cast<size_t>(b.rows), {});
+  if (a.rows == 0 || b.rows == 0) return;
+  const auto squared_norms = [](const cv::Mat& m) {
+    std::vector<float> norms(static_cast<size_t>(m.rows));
+    for (int r = 0; r < m.rows; ++r) norms[static_cast<size_t>(r)] = static_cast<float>(m.row(r).dot(m.row(r)));
+    return norms;
+  };
+  const std::vector<float> a_norms = squared_norms(a);
+  const std::vector<float> b_norms = squared_norms(b);
+  constexpr int kBlock = 512;
+  std::vector<float> dots(static_cast<size_t>(std::min(kBlock, a.rows)) * static_cast<size_t>(b.rows));
+  for (int start = 0; start < a.rows; start += kBlock) {
+    const int rows = std::min(kBlock, a.rows - start);
+    MultiplyByTranspose(a.ptr<float>(start), rows, b.ptr<float>(0), b.rows, kDescriptorSize, dots.data());
+    for (int r = 0; r < rows; ++r) {
+      const int i = start + r;
+      const float* row = dots.data() + static_cast<size_t>(r) * static_cast<size_t>(b.rows);
+      NearestTwo& forward = (*a_to_b)[static_cast<size_t>(i)];
+      for (int c = 0; c < b.rows; ++c) {
+        const float distance = std::max(0.f, a_norms[static_cast<size_t>(i)] + b_norms[static_cast<size_t>(c)] - 2.f * row[c]);
+        forward.Offer(c, distance);
         (*b_to_a)[static_cast<size_t>(c)].Offer(i, distance);
       }
     }
@@ -179,8 +175,8 @@ PairwiseMatches MatchDescriptors(const FeaturesPerView& features, const PairSet&
           forward = FlannQuery(b, a.data, options.flann_checks);
           if (options.mutual_check) backward = FlannQuery(a, b.data, options.flann_checks);
         } else {
-          BruteForceNearest(features.at(pair.first).descriptors, features.at(pair.second).descriptors, &forward,
-                            &backward);
+          BruteForceNearest(ToFloatMat(features.at(pair.first).descriptors),
+                            ToFloatMat(features.at(pair.second).descriptors), &forward, &backward);
         }
         results[k] = Combine(forward, backward, options);
       },

@@ -15,15 +15,15 @@ namespace sfm_pruning {
 enum class DescriptorMatcher {
   kAuto,        // per pair, whichever of the two is cheaper for its feature counts (see below)
   kFlann,       // approximate: 4 randomized kd-trees per image, `flann_checks` leaves per query
-  kBruteForce,  // exact: all distances through one matrix product per pair
+  kBruteForce,  // exact: all distances through one matrix product (BLAS) per pair
 };
 
 // kAuto takes brute force when n_a * n_b <= kAutoBruteForceBalance * (n_a + n_b): its cost grows
-// with the product of the feature counts, FLANN's with their sum. Measured on this project's
-// build (2 cores, no -march): about 11 ns per descriptor pair against 20 us per FLANN query at 64
-// checks, so brute force is cheaper up to about 3700 features per image (the temple ring's 1400),
-// FLANN beyond (fountain-P11's 8192).
-inline constexpr double kAutoBruteForceBalance = 1800.0;
+// with the product of the feature counts, FLANN's with their sum. Measured on fountain-P11 (2
+// cores, OpenBLAS's sgemm, docs/frontend.md): brute force matches 8192 features per image in 75 %
+// of FLANN's time at 64 checks and 12288 in 125 %, so the balance sits at about 10000 features per
+// image. With a slow BLAS (the reference one) brute force is several times slower.
+inline constexpr double kAutoBruteForceBalance = 5000.0;
 
 struct DescriptorMatchingOptions {
   DescriptorMatcher matcher = DescriptorMatcher::kAuto;

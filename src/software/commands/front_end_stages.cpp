@@ -103,7 +103,7 @@ void AddMatchOptions(CLI::App* cmd, MatchSettings* settings, bool with_seed) {
       ->check(CLI::ExistingFile);
   cmd->add_option("--matcher", settings->matcher,
                   "FLANN kd-trees (approximate), exact BRUTE_FORCE, or AUTO: per pair the cheaper of the two "
-                  "(brute force up to ~3700 features per image)")
+                  "(brute force up to ~10000 features per image)")
       ->check(CLI::IsMember({"AUTO", "FLANN", "BRUTE_FORCE"}))
       ->capture_default_str();
   cmd->add_option("--ratio", settings->ratio, "Lowe's ratio test on descriptor distances")

@@ -33,7 +33,7 @@ struct InitSettings {
 };
 
 struct FeatureSettings {
-  int max_features = 8192;
+  int max_features = 12288;  // SiftOptions::max_features
   int max_image_size = 1600;  // SiftOptions::max_image_size
   bool no_root_sift = false;
 };

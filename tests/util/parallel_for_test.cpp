@@ -1,4 +1,4 @@
-// ParallelFor (util/parallel_for.hpp), the loop the exporters run their images on.
+// ParallelFor (util/parallel_for.hpp), the loop the exporters, the matcher and the engines run their items on.
 #include <gtest/gtest.h>
 
 #include <atomic>
