@@ -5,6 +5,7 @@
 
 #include <iostream>
 #include <set>
+#include <vector>
 
 #include "../global/engine_test_scene.hpp"
 #include "sfm_pruning/pruning/view_graph_pruning.hpp"
@@ -30,6 +31,15 @@ Comparison CompareEngines(const SyntheticScene& scene, const PrunedGlobalEngineO
   if (result.global.success) result.global_eval = EvaluateModel(global_model, scene.ground_truth);
   if (result.pruned.engine.success) result.pruned_eval = EvaluateModel(pruned_model, scene.ground_truth);
   return result;
+}
+
+// 24 views around an object whose two halves look alike: GLOBAL folds it.
+SyntheticScene SmallSymmetricOrbit() {
+  SyntheticSceneOptions scene_options;
+  scene_options.scene = "orbit_symmetric";
+  scene_options.seed = 1;
+  scene_options.num_views = 24;
+  return GenerateSyntheticScene(scene_options);
 }
 
 // Every view of the partitioned component is in exactly one accepted subgraph; the tree is
@@ -87,12 +97,44 @@ TEST(EnginePrunedScene, SinglePassAcceptsEveryCommunityOfTheRoot) {
   EXPECT_EQ(report.partition.accepted.size(), report.partition.nodes.front().children.size());
 }
 
+TEST(EnginePrunedScene, PartitionDoesNotDependOnTheThreadCount) {
+  const SyntheticScene scene = SmallSymmetricOrbit();
+  const SfmData listing = Listing(scene);
+  const ViewGraph input = BuildViewGraphFromMatches({}, listing, scene.features, scene.putative_matches);
+  std::vector<ViewGraphPruningReport> reports;
+  for (int threads : {1, 2, 3}) {
+    PrunedGlobalEngineOptions options;
+    options.SetSeedAndThreads(0, threads);
+    ViewGraph graph = input;
+    ViewGraphPruningReport report;
+    PruneViewGraph(options.pruning, &graph, listing, scene.features, &report);
+    ExpectWellFormedPartition(report.partition);
+    reports.push_back(std::move(report));
+  }
+  const RecursivePartitionResult& first = reports.front().partition;
+  ASSERT_GE(first.accepted.size(), 2u);
+  for (size_t r = 1; r < reports.size(); ++r) {
+    const RecursivePartitionResult& other = reports[r].partition;
+    ASSERT_EQ(other.nodes.size(), first.nodes.size());
+    for (size_t i = 0; i < first.nodes.size(); ++i) {
+      EXPECT_EQ(other.nodes[i].view_ids, first.nodes[i].view_ids) << "node " << i;
+      EXPECT_EQ(other.nodes[i].parent, first.nodes[i].parent);
+      EXPECT_EQ(other.nodes[i].status, first.nodes[i].status);
+    }
+    ASSERT_EQ(other.accepted.size(), first.accepted.size());
+    for (size_t k = 0; k < first.accepted.size(); ++k) {
+      EXPECT_EQ(other.accepted[k].node, first.accepted[k].node);
+      for (const auto& [view, pose] : first.accepted[k].solution.poses) {
+        // Single-threaded engine runs: bitwise the same poses.
+        EXPECT_EQ(other.accepted[k].solution.poses.at(view).center, pose.center) << "view " << view;
+      }
+    }
+    EXPECT_EQ(reports[r].removed_edges.size(), reports.front().removed_edges.size());
+  }
+}
+
 TEST(EnginePrunedScene, DuplicateSceneReportsGlobalVersusPruned) {
-  SyntheticSceneOptions scene_options;
-  scene_options.scene = "orbit_symmetric";
-  scene_options.seed = 1;
-  scene_options.num_views = 24;
-  const SyntheticScene scene = GenerateSyntheticScene(scene_options);
+  const SyntheticScene scene = SmallSymmetricOrbit();
   const Comparison run = CompareEngines(scene);
   ASSERT_TRUE(run.global.success) << run.global.message;
   ASSERT_TRUE(run.pruned.engine.success) << run.pruned.engine.message;

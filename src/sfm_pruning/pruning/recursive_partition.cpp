@@ -2,7 +2,11 @@
 
 #include <chrono>
 #include <set>
+#include <string>
 #include <utility>
+#include <vector>
+
+#include "sfm_pruning/util/parallel_for.hpp"
 
 namespace sfm_pruning {
 namespace {
@@ -11,6 +15,11 @@ double SecondsSince(std::chrono::steady_clock::time_point start) {
   return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
 }
 
+// Nodes are processed in waves: every community Louvain produced in the previous wave is solved
+// and tested in parallel (each is independent of its siblings and cousins), then the inconsistent
+// ones are split, one after the other, into the next wave. PartitionViewGraph then puts the
+// result into the order a one-at-a-time depth-first partition gives (Renumber), so that nothing
+// downstream depends on the waves or the thread count.
 class Partitioner {
  public:
   Partitioner(const RecursivePartitionOptions& options, const ViewGraph& graph, const SfmData& views_and_intrinsics,
@@ -27,21 +36,39 @@ class Partitioner {
     root.num_edges = graph_.NumValidEdges();
     result_.nodes.push_back(std::move(root));
     if (result_.nodes[0].view_ids.empty()) return std::move(result_);
-    if (!Split(0)) {
+    std::vector<int> wave;
+    if (!Split(0, &wave)) {
       // Louvain cannot split the whole graph: it is one subgraph, reconstructed as is.
-      ViewGraph induced = graph_;
-      SubgraphSolution solution = Solve(0, induced);
-      Test(0, induced, solution);
-      Accept(0, SubgraphStatus::kUnsplittable, std::move(solution));
+      Accept(0, SubgraphStatus::kUnsplittable, Evaluate(0));
+    }
+    size_t processed = 1;
+    while (!wave.empty()) {
+      std::vector<SubgraphSolution> solutions(wave.size());
+      const size_t known = result_.nodes.size();
+      ProgressCallback wave_progress;
+      if (progress_) {
+        wave_progress = [this, processed, known](const std::string&, size_t done, size_t) {
+          ReportProgress(progress_, "subgraph partition", processed + done, known);
+        };
+      }
+      ParallelFor(
+          wave.size(), options_.num_threads, [&](size_t k) { solutions[k] = Evaluate(wave[k]); }, wave_progress);
+      processed += wave.size();
+      std::vector<int> next_wave;
+      for (size_t k = 0; k < wave.size(); ++k) Decide(wave[k], std::move(solutions[k]), &next_wave);
+      wave = std::move(next_wave);
+    }
+    for (const SubgraphNode& node : result_.nodes) {
+      if (node.solved && node.view_ids.size() >= 2) ++result_.num_engine_runs;
     }
     ReportProgress(progress_, "subgraph partition", result_.nodes.size(), result_.nodes.size());
     return std::move(result_);
   }
 
  private:
-  // Louvain on the node's induced subgraph; adds the children and processes them (depth first).
+  // Louvain on the node's induced subgraph; appends the children to the tree and to `wave`.
   // False when Louvain returns fewer than two communities.
-  bool Split(int index) {
+  bool Split(int index, std::vector<int>* wave) {
     const std::vector<IndexT>& views = result_.nodes[static_cast<size_t>(index)].view_ids;
     const ViewGraph induced = graph_.InducedSubgraph(std::set<IndexT>(views.begin(), views.end()));
     const LouvainResult louvain = DetectCommunitiesLouvain(induced, options_.louvain);
@@ -57,29 +84,32 @@ class Partitioner {
     }
     result_.nodes[static_cast<size_t>(index)].children = children;
     result_.nodes[static_cast<size_t>(index)].status = SubgraphStatus::kSplit;
-    for (int child : children) Process(child);
+    wave->insert(wave->end(), children.begin(), children.end());
     return true;
   }
 
-  void Process(int index) {
-    ReportProgress(progress_, "subgraph partition", static_cast<size_t>(index), result_.nodes.size());
-    const SubgraphNode& node = result_.nodes[static_cast<size_t>(index)];
+  // Solves and (unless tiny) tests one node. Touches only that node: safe in parallel while the
+  // tree does not grow.
+  SubgraphSolution Evaluate(int index) {
+    SubgraphNode& node = result_.nodes[static_cast<size_t>(index)];
     const ViewGraph induced = graph_.InducedSubgraph(std::set<IndexT>(node.view_ids.begin(), node.view_ids.end()));
-    result_.nodes[static_cast<size_t>(index)].num_edges = induced.NumValidEdges();
+    node.num_edges = induced.NumValidEdges();
     SubgraphSolution solution = Solve(index, induced);
-    if (result_.nodes[static_cast<size_t>(index)].view_ids.size() <= options_.tiny_subgraph_size) {
+    if (node.view_ids.size() > options_.tiny_subgraph_size) Test(index, induced, solution);
+    return solution;
+  }
+
+  void Decide(int index, SubgraphSolution solution, std::vector<int>* next_wave) {
+    const SubgraphNode& node = result_.nodes[static_cast<size_t>(index)];
+    if (node.view_ids.size() <= options_.tiny_subgraph_size) {
       Accept(index, SubgraphStatus::kTiny, std::move(solution));
-      return;
-    }
-    Test(index, induced, solution);
-    const SubgraphNode& tested = result_.nodes[static_cast<size_t>(index)];
-    if (tested.consistency.consistent) {
+    } else if (node.consistency.consistent) {
       Accept(index, SubgraphStatus::kConsistent, std::move(solution));
     } else if (!options_.recursive) {
       Accept(index, SubgraphStatus::kSinglePass, std::move(solution));
-    } else if (tested.depth >= options_.max_depth) {
+    } else if (node.depth >= options_.max_depth) {
       Accept(index, SubgraphStatus::kMaxDepth, std::move(solution));
-    } else if (!Split(index)) {
+    } else if (!Split(index, next_wave)) {
       Accept(index, SubgraphStatus::kUnsplittable, std::move(solution));
     }
   }
@@ -98,7 +128,6 @@ class Partitioner {
       SfmData model;
       GlobalEngineReport report;
       RunGlobalEngine(options_.engine, induced, views_and_intrinsics_, features_, &model, &report);
-      ++result_.num_engine_runs;
       node.engine_success = report.success;
       node.engine_message = report.message;
       if (report.success) {
@@ -145,6 +174,44 @@ class Partitioner {
   RecursivePartitionResult result_;
 };
 
+// Depth-first order: a node's children are numbered together when it is split, then each child's
+// subtree in turn; accepted subgraphs in the order of their leaves. This is the order in which a
+// sequential depth-first partition creates and accepts them.
+RecursivePartitionResult Renumber(RecursivePartitionResult waves) {
+  const size_t count = waves.nodes.size();
+  std::vector<int> new_index(count, -1);
+  std::vector<int> leaf_order;
+  new_index[0] = 0;
+  int next = 1;
+  std::vector<int> stack = {0};
+  while (!stack.empty()) {
+    const int old = stack.back();
+    stack.pop_back();
+    const SubgraphNode& node = waves.nodes[static_cast<size_t>(old)];
+    for (int child : node.children) new_index[static_cast<size_t>(child)] = next++;
+    if (node.accepted_index >= 0) leaf_order.push_back(old);
+    for (auto child = node.children.rbegin(); child != node.children.rend(); ++child) stack.push_back(*child);
+  }
+  RecursivePartitionResult ordered;
+  ordered.num_engine_runs = waves.num_engine_runs;
+  ordered.nodes.resize(count);
+  for (size_t old = 0; old < count; ++old) {
+    SubgraphNode node = std::move(waves.nodes[old]);
+    if (node.parent >= 0) node.parent = new_index[static_cast<size_t>(node.parent)];
+    for (int& child : node.children) child = new_index[static_cast<size_t>(child)];
+    ordered.nodes[static_cast<size_t>(new_index[old])] = std::move(node);
+  }
+  for (const int old : leaf_order) {
+    const int index = new_index[static_cast<size_t>(old)];
+    SubgraphNode& node = ordered.nodes[static_cast<size_t>(index)];
+    AcceptedSubgraph accepted = std::move(waves.accepted[static_cast<size_t>(node.accepted_index)]);
+    accepted.node = index;
+    node.accepted_index = static_cast<int>(ordered.accepted.size());
+    ordered.accepted.push_back(std::move(accepted));
+  }
+  return ordered;
+}
+
 }  // namespace
 
 const char* SubgraphStatusName(SubgraphStatus status) {
@@ -174,7 +241,7 @@ SubgraphSolution SolutionFromModel(const std::vector<IndexT>& view_ids, const Sf
 RecursivePartitionResult PartitionViewGraph(const RecursivePartitionOptions& options, const ViewGraph& graph,
                                             const SfmData& views_and_intrinsics, const FeaturesPerView& features,
                                             const ProgressCallback& progress) {
-  return Partitioner(options, graph, views_and_intrinsics, features, progress).Run();
+  return Renumber(Partitioner(options, graph, views_and_intrinsics, features, progress).Run());
 }
 
 }  // namespace sfm_pruning

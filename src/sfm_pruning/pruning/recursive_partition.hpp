@@ -13,8 +13,10 @@
 // The root (depth 0) is the whole input graph; it is always split first, never solved unless
 // Louvain cannot split it. Every node of the tree is kept for the report.
 //
-// Deterministic: communities are processed in Louvain's canonical order (largest first), depth
-// first; Louvain and the engine are seeded from the options.
+// Parallel and deterministic: the communities of one level are solved and tested in parallel
+// (num_threads), each by a single-threaded engine run, so the partition does not depend on the
+// thread count; the tree and the accepted subgraphs come out in depth-first order (communities in
+// Louvain's canonical order, largest first). Louvain and the engine are seeded from the options.
 #pragma once
 
 #include <cstddef>
@@ -37,7 +39,8 @@ struct RecursivePartitionOptions {
   bool recursive = true;  // false: a single Louvain pass, every community accepted (ablation)
   LouvainOptions louvain;
   ConsistencyTestOptions consistency;  // each test can be switched off there
-  GlobalEngineOptions engine;          // per-community reconstruction
+  GlobalEngineOptions engine;          // per-community reconstruction (engine.num_threads: 1, see above)
+  int num_threads = 1;                 // communities solved at the same time
   size_t tiny_subgraph_size = 2;       // communities of at most this many views are accepted
   int max_depth = 8;                   // nodes at this depth are not split again
 };
@@ -78,7 +81,7 @@ struct AcceptedSubgraph {
 };
 
 struct RecursivePartitionResult {
-  std::vector<SubgraphNode> nodes;  // nodes[0] = root; preorder
+  std::vector<SubgraphNode> nodes;  // nodes[0] = root; a node's children are consecutive, depth first
   std::vector<AcceptedSubgraph> accepted;  // in acceptance order (depth first, largest first)
   size_t num_engine_runs = 0;
 };

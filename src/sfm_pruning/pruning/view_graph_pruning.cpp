@@ -167,7 +167,10 @@ void PrunedGlobalEngineOptions::SetSeedAndThreads(uint64_t seed, int num_threads
   engine.seed = seed;
   engine.num_threads = num_threads;
   pruning.partition.engine.seed = seed;
-  pruning.partition.engine.num_threads = num_threads;
+  // Communities in parallel, each engine run on one thread: the partition is then the same for
+  // any thread count (a multi-threaded Ceres sums in a thread-dependent order).
+  pruning.partition.engine.num_threads = 1;
+  pruning.partition.num_threads = num_threads;
   pruning.partition.louvain.seed = seed;
   pruning.alignment.seed = seed;
   pruning.num_threads = num_threads;
