@@ -6,17 +6,18 @@
 
 namespace sfm_pruning {
 
+Eigen::Vector3d SubgraphMeanCentre(const SubgraphSolution& solution) {
+  Eigen::Vector3d sum = Eigen::Vector3d::Zero();
+  for (const auto& [view_id, pose] : solution.poses) sum += pose.center;
+  return solution.poses.empty() ? sum : Eigen::Vector3d(sum / static_cast<double>(solution.poses.size()));
+}
+
 Pose SubgraphMeanPose(const SubgraphSolution& solution) {
   if (solution.poses.empty()) return Pose();
   std::vector<Eigen::Matrix3d> rotations;
   rotations.reserve(solution.poses.size());
-  Eigen::Vector3d center_sum = Eigen::Vector3d::Zero();
-  for (const auto& [view_id, pose] : solution.poses) {
-    rotations.push_back(pose.rotation);
-    center_sum += pose.center;
-  }
-  return Pose(GeodesicMeanRotation(rotations).rotation,
-              center_sum / static_cast<double>(solution.poses.size()));
+  for (const auto& [view_id, pose] : solution.poses) rotations.push_back(pose.rotation);
+  return Pose(GeodesicMeanRotation(rotations).rotation, SubgraphMeanCentre(solution));
 }
 
 std::map<ObservationKey, IndexT> IndexLandmarksByObservation(const SubgraphSolution& solution) {

@@ -21,6 +21,9 @@ struct SubgraphSolution {
   std::map<IndexT, Landmark> landmarks;  // X in the subgraph frame; observations by view id
 };
 
+// The arithmetic mean of the centres of the posed views (the origin when nothing is posed).
+Eigen::Vector3d SubgraphMeanCentre(const SubgraphSolution& solution);
+
 // The mean pose c of a subgraph: rotation = L2 geodesic (Karcher) mean of the world-to-camera
 // rotations of its posed views (so3.hpp; the mean of the inverses is the inverse of the mean, so
 // the direction convention does not matter), centre = arithmetic mean of their centres.

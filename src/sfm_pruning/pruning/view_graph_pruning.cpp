@@ -49,8 +49,7 @@ SubgraphAlignmentOptions PairAlignmentOptions(const ViewGraphPruningOptions& opt
 SubgraphFrame FrameOfSubgraph(const SubgraphSolution& solution) {
   SubgraphFrame frame;
   if (solution.poses.empty()) return frame;
-  for (const auto& [view_id, pose] : solution.poses) frame.centre += pose.center;
-  frame.centre /= static_cast<double>(solution.poses.size());
+  frame.centre = SubgraphMeanCentre(solution);  // not SubgraphMeanPose: its rotation mean is unused here
   std::vector<double> distances;
   for (const auto& [view_id, pose] : solution.poses) distances.push_back((pose.center - frame.centre).norm());
   frame.radius = Median(std::move(distances));
