@@ -85,9 +85,10 @@ void BruteForceNearest(const cv::Mat& a, const cv::Mat& b, std::vector<NearestTw
     for (int r = 0; r < rows; ++r) {
       const int i = start + r;
       const float* row = dots.data() + static_cast<size_t>(r) * static_cast<size_t>(b.rows);
+      const float a_norm = a_norms[static_cast<size_t>(i)];
       NearestTwo& forward = (*a_to_b)[static_cast<size_t>(i)];
       for (int c = 0; c < b.rows; ++c) {
-        const float distance = std::max(0.f, a_norms[static_cast<size_t>(i)] + b_norms[static_cast<size_t>(c)] - 2.f * row[c]);
+        const float distance = std::max(0.f, a_norm + b_norms[static_cast<size_t>(c)] - 2.f * row[c]);
         forward.Offer(c, distance);
         (*b_to_a)[static_cast<size_t>(c)].Offer(i, distance);
       }
