@@ -120,8 +120,13 @@ bool RunStages(const GlobalEngineOptions& options, const ViewGraph& graph, const
     for (size_t round = 0; round < num_adjustments && adjusted; ++round) {
       ReportProgress(progress, "bundle adjustment", round, num_adjustments);
       BundleAdjustmentOptions round_options = bundle;
-      round_options.function_tolerance = round + 1 < num_adjustments ? options.intermediate_function_tolerance
-                                                                     : options.final_function_tolerance;
+      const bool is_last = round + 1 == num_adjustments;
+      round_options.function_tolerance =
+          is_last ? options.final_function_tolerance : options.intermediate_function_tolerance;
+      if (!is_last) {
+        round_options.max_num_iterations =
+            std::min(round_options.max_num_iterations, options.intermediate_max_num_iterations);
+      }
       report->bundle_adjustments.push_back(
           round == 0 ? AdjustBundleOnSubset(round_options, options.first_bundle_subsampling, options.retriangulation, out)
                      : AdjustBundle(round_options, out));

@@ -65,6 +65,11 @@ struct GlobalEngineOptions {
   double positioning_function_tolerance = 1e-6;   // both positioning methods (solver: 1e-10)
   double intermediate_function_tolerance = 1e-4;  // adjustments before the last
   double final_function_tolerance = 1e-5;         // the last adjustment (GLOMAP's value)
+  // Iteration cap of the adjustments before the last (the last keeps bundle.max_num_iterations).
+  // Under the Huber loss, with outlier observations not yet filtered, they converge linearly:
+  // on sequential_large@2000 they took 72 and 61 iterations at 1.2-1.4 s each to reach 1e-4, most
+  // of them shaving the last 3 % off the cost, which the filter then changes anyway.
+  int intermediate_max_num_iterations = 25;
   // After the final filter, views observing fewer landmarks than this lose their pose.
   size_t min_observations_per_view = 10;
   // Overrides the positioning solvers' seeds (both methods).
