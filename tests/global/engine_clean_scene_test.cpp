@@ -36,6 +36,25 @@ TEST(EngineCleanScene, TranslationAveragingAlsoRegistersEveryView) {
   EXPECT_GE(AucAt(EvaluateModel(run.model, scene.ground_truth), 3.0), 97.0);
 }
 
+TEST(EngineCleanScene, IterationCapBindsOnlyTheAdjustmentsBeforeTheLast) {
+  const SyntheticScene& scene = CleanScene();
+  GlobalEngineOptions options;
+  options.intermediate_max_num_iterations = 1;
+  const EngineRun run = RunEngineOn(scene, scene.putative_matches, {}, options);
+  ASSERT_TRUE(run.engine.success) << run.engine.message;
+  const std::vector<BundleAdjustmentResult>& adjustments = run.engine.bundle_adjustments;
+  ASSERT_EQ(adjustments.size(), static_cast<size_t>(options.num_bundle_rounds) + 1);
+  // num_iterations counts Ceres' steps, and Ceres counts its initial evaluation as one.
+  for (size_t k = 0; k + 1 < adjustments.size(); ++k) {
+    EXPECT_LE(adjustments[k].num_iterations, 2) << "adjustment " << k;
+    EXPECT_EQ(adjustments[k].termination, "NO_CONVERGENCE") << "adjustment " << k;
+  }
+  // The last adjustment is not capped, so it still converges to the clean scene's accuracy.
+  EXPECT_GT(adjustments.back().num_iterations, 2);
+  EXPECT_EQ(adjustments.back().termination, "CONVERGENCE");
+  EXPECT_GE(AucAt(EvaluateModel(run.model, scene.ground_truth), 3.0), 97.0);
+}
+
 TEST(EngineCleanScene, SameSeedGivesBitwiseIdenticalPoses) {
   const SyntheticScene& scene = CleanScene();
   ViewGraphBuildOptions build;
