@@ -583,7 +583,8 @@ def write_markdown(path, meta, rows, scenes):
                      "pairs determine it), then focal, k1 and principal point refined in bundle adjustment under "
                      "weak priors (principal point near the centre, k1 near 0; docs/global.md); when "
                      "that moves the focal by more than 5 % the pairs are verified and solved again with the refined "
-                     "intrinsics (`first pass` in the breakdown). So the GLOBAL rows **refine the principal point**; "
+                     "intrinsics (`first pass` in the breakdown); a camera whose focal the pairs do not determine gets "
+                     "a quick solve that finds it first (`focal search`). So the GLOBAL rows **refine the principal point**; "
                      "a `GLOBAL-PP` row, where present, is the same with `--refine_principal_point 0`, a `+K` row "
                      "the engine started from the dataset's known K (`--known_k`: \"start from K.txt\", "
                      "`../shared/datasets/README.md`); COLMAP never gets K and does not refine the principal point.")

@@ -8,6 +8,7 @@
 
 #include <ceres/ceres.h>
 #include <ceres/normal_prior.h>
+#include <ceres/product_manifold.h>
 
 #include "sfm_pruning/global/bundle_observations.hpp"
 #include "sfm_pruning/global/bundle_parameters.hpp"
@@ -83,30 +84,40 @@ IndexT FirstPoseId(const SfmData& data, const BundleParameters& parameters) {
   return kUndefinedIndex;
 }
 
-// Applies the gauge of the header comment; returns the pose held constant (or kUndefinedIndex).
-IndexT FixGauge(const BundleAdjustmentOptions& options, const SfmData& data, BundleParameters* parameters,
-                ceres::Problem* problem) {
-  if (!options.fix_first_pose) return kUndefinedIndex;
-  const IndexT first = FirstPoseId(data, *parameters);
-  if (first == kUndefinedIndex) return first;
-  problem->SetParameterBlockConstant(parameters->quaternion(first));
-  problem->SetParameterBlockConstant(parameters->center(first));
-  if (!options.fix_scale) return first;
-
-  const Eigen::Map<const Eigen::Vector3d> first_center(parameters->center(first));
+// The poses' manifolds, with the gauge of the header comment; returns the pose held constant
+// (or kUndefinedIndex). Every pose is one block (quaternion, centre): the quaternion moves on its
+// manifold, the centre freely, except on the scale gauge's pose, where one coordinate is fixed.
+IndexT SetPoseManifoldsAndGauge(const BundleAdjustmentOptions& options, const SfmData& data,
+                                BundleParameters* parameters, ceres::Problem* problem) {
+  using FreePose = ceres::ProductManifold<ceres::QuaternionManifold, ceres::EuclideanManifold<3>>;
+  using ScaleGaugePose = ceres::ProductManifold<ceres::QuaternionManifold, ceres::SubsetManifold>;
+  const IndexT first = options.fix_first_pose ? FirstPoseId(data, *parameters) : kUndefinedIndex;
   IndexT second = kUndefinedIndex;
-  double max_distance = 0.0;
-  for (const auto& [pose_id, slot] : parameters->pose_slots()) {  // ties go to the smallest id
-    const double distance = (Eigen::Map<const Eigen::Vector3d>(parameters->center(pose_id)) - first_center).norm();
-    if (distance > max_distance) {
-      max_distance = distance;
-      second = pose_id;
+  int axis = 0;
+  if (first != kUndefinedIndex && options.fix_scale) {
+    const Eigen::Map<const Eigen::Vector3d> first_center(parameters->center(first));
+    double max_distance = 0.0;
+    for (const auto& [pose_id, slot] : parameters->pose_slots()) {  // ties go to the smallest id
+      const double distance = (Eigen::Map<const Eigen::Vector3d>(parameters->center(pose_id)) - first_center).norm();
+      if (distance > max_distance) {
+        max_distance = distance;
+        second = pose_id;
+      }
+    }
+    // All centres coincide: no scale to fix.
+    if (second != kUndefinedIndex) {
+      (Eigen::Map<const Eigen::Vector3d>(parameters->center(second)) - first_center).cwiseAbs().maxCoeff(&axis);
     }
   }
-  if (second == kUndefinedIndex) return first;  // all centres coincide: no scale to fix
-  int axis = 0;
-  (Eigen::Map<const Eigen::Vector3d>(parameters->center(second)) - first_center).cwiseAbs().maxCoeff(&axis);
-  problem->SetManifold(parameters->center(second), new ceres::SubsetManifold(3, {axis}));
+  for (const auto& [pose_id, slot] : parameters->pose_slots()) {
+    double* block = parameters->pose(pose_id);
+    if (pose_id == second) {
+      problem->SetManifold(block, new ScaleGaugePose(ceres::QuaternionManifold(), ceres::SubsetManifold(3, {axis})));
+    } else {
+      problem->SetManifold(block, new FreePose());
+    }
+  }
+  if (first != kUndefinedIndex) problem->SetParameterBlockConstant(parameters->pose(first));
   return first;
 }
 
@@ -172,14 +183,12 @@ size_t AddResiduals(const BundleAdjustmentOptions& options, const SfmData& data,
     for (const PosedObservation& obs : parameters->observations(k)) {
       const CameraIntrinsics& intrinsics = *obs.intrinsics;
       const Eigen::Vector2d& pixel = obs.observation->x;
-      double* rotation = parameters->quaternion(obs.view->id_pose);
-      double* center = parameters->center(obs.view->id_pose);
+      double* pose = parameters->pose(obs.view->id_pose);
       if (IsPinholeFamily(intrinsics.model())) {
-        problem->AddResidualBlock(bundle::CreatePinholeCost(intrinsics.model(), pixel), loss, rotation, center,
+        problem->AddResidualBlock(bundle::CreatePinholeCost(intrinsics.model(), pixel), loss, pose,
                                   parameters->point(k), parameters->intrinsics(obs.view->id_intrinsic));
       } else {
-        problem->AddResidualBlock(bundle::CreateSphericalCost(intrinsics, pixel), loss, rotation, center,
-                                  parameters->point(k));
+        problem->AddResidualBlock(bundle::CreateSphericalCost(intrinsics, pixel), loss, pose, parameters->point(k));
       }
       ++num_observations;
     }
@@ -194,8 +203,7 @@ std::shared_ptr<ceres::ParameterBlockOrdering> EliminationOrdering(const ceres::
   auto ordering = std::make_shared<ceres::ParameterBlockOrdering>();
   for (size_t k = 0; k < parameters->landmark_ids().size(); ++k) ordering->AddElementToGroup(parameters->point(k), 0);
   for (const auto& [pose_id, slot] : parameters->pose_slots()) {
-    ordering->AddElementToGroup(parameters->quaternion(pose_id), 1);
-    ordering->AddElementToGroup(parameters->center(pose_id), 1);
+    ordering->AddElementToGroup(parameters->pose(pose_id), 1);
   }
   for (const auto& [id, offset] : parameters->intrinsic_offsets()) {
     // Spherical intrinsics have no block in the problem.
@@ -236,10 +244,7 @@ BundleAdjustmentResult AdjustBundleUntimed(const BundleAdjustmentOptions& option
 
   ceres::Problem problem;
   result.num_observations = AddResiduals(options, *sfm_data, &parameters, &problem);
-  for (const auto& [pose_id, slot] : parameters.pose_slots()) {
-    problem.SetManifold(parameters.quaternion(pose_id), new ceres::QuaternionManifold());
-  }
-  const IndexT gauge_pose = FixGauge(options, *sfm_data, &parameters, &problem);
+  const IndexT gauge_pose = SetPoseManifoldsAndGauge(options, *sfm_data, &parameters, &problem);
   SetIntrinsicsManifolds(options, *sfm_data, &parameters, &problem);
   AddIntrinsicsPriors(options, *sfm_data, &parameters, &problem);
   result.num_poses = parameters.num_poses();

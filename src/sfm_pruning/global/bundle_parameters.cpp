@@ -31,14 +31,14 @@ BundleParameters::BundleParameters(const SfmData& data) {
     Eigen::Map<Eigen::Vector3d>(point(k)) = data.structure.at(landmark_ids_[k]).X;
   }
   for (const auto& [pose_id, pose_slot] : pose_slots_) {
-    const Pose& pose = data.poses.at(pose_id);
-    const Eigen::Quaterniond q = Eigen::Quaterniond(pose.rotation).normalized();
-    double* block = quaternion(pose_id);
+    const Pose& given = data.poses.at(pose_id);
+    const Eigen::Quaterniond q = Eigen::Quaterniond(given.rotation).normalized();
+    double* block = pose(pose_id);
     block[0] = q.w();
     block[1] = q.x();
     block[2] = q.y();
     block[3] = q.z();
-    Eigen::Map<Eigen::Vector3d>(center(pose_id)) = pose.center;
+    Eigen::Map<Eigen::Vector3d>(block + 4) = given.center;
   }
   for (const auto& [intrinsic_id, intrinsic_offset] : intrinsic_offsets_) {
     const std::vector<double>& params = data.intrinsics.at(intrinsic_id).params();
@@ -52,7 +52,7 @@ void BundleParameters::WriteBack(IndexT keep_pose_id, SfmData* data) const {
   }
   for (const auto& [pose_id, pose_slot] : pose_slots_) {
     if (pose_id == keep_pose_id) continue;
-    const double* q = &values_[QuaternionOffset(pose_id)];
+    const double* q = &values_[PoseOffset(pose_id)];
     const Eigen::Quaterniond rotation(q[0], q[1], q[2], q[3]);
     data->poses[pose_id] = Pose(rotation.normalized().toRotationMatrix(), Eigen::Map<const Eigen::Vector3d>(q + 4));
   }

@@ -31,8 +31,9 @@ class BundleParameters {
   const std::map<IndexT, size_t>& intrinsic_offsets() const { return intrinsic_offsets_; }
 
   double* point(size_t k) { return &values_[3 * k]; }
-  double* quaternion(IndexT pose_id) { return &values_[QuaternionOffset(pose_id)]; }
-  double* center(IndexT pose_id) { return &values_[QuaternionOffset(pose_id) + 4]; }
+  // The pose block: quaternion (w, x, y, z), then centre.
+  double* pose(IndexT pose_id) { return &values_[PoseOffset(pose_id)]; }
+  const double* center(IndexT pose_id) const { return &values_[PoseOffset(pose_id) + 4]; }
   double* intrinsics(IndexT intrinsic_id) { return &values_[intrinsic_offsets_.at(intrinsic_id)]; }
 
   // Copies the values back; the pose `keep_pose_id` (the gauge) is left exactly as it was,
@@ -40,7 +41,7 @@ class BundleParameters {
   void WriteBack(IndexT keep_pose_id, SfmData* data) const;
 
  private:
-  size_t QuaternionOffset(IndexT pose_id) const { return poses_offset_ + 7 * pose_slots_.at(pose_id); }
+  size_t PoseOffset(IndexT pose_id) const { return poses_offset_ + 7 * pose_slots_.at(pose_id); }
 
   std::vector<IndexT> landmark_ids_;
   std::vector<std::vector<PosedObservation>> observations_;

@@ -148,6 +148,13 @@ bool RunStages(const GlobalEngineOptions& options, const ViewGraph& graph, const
 
 }  // namespace
 
+GlobalEngineOptions WithFocalSearchSchedule(GlobalEngineOptions options, const FocalSearchSchedule& schedule) {
+  options.num_bundle_rounds = 0;
+  options.first_bundle_subsampling.max_tracks_per_view = schedule.max_tracks_per_view;
+  options.bundle.max_num_iterations = schedule.max_num_iterations;
+  return options;
+}
+
 void RunGlobalEngine(const GlobalEngineOptions& options, const ViewGraph& graph, const SfmData& views_and_intrinsics,
                      const FeaturesPerView& features, SfmData* out, GlobalEngineReport* report,
                      const ProgressCallback& progress) {

@@ -78,6 +78,22 @@ struct GlobalEngineOptions {
   int num_threads = 1;
 };
 
+// The schedule of a solve whose only product is the focal length of cameras that the view-graph
+// calibration could not determine (focal_calibration.hpp: a ring of cameras looking at its
+// centre leaves the pairs' cost flat). Bundle adjustment finds such a focal, but slowly: focal
+// and scene depth trade off along a curved valley, so Levenberg-Marquardt moves the focal by
+// about 1 % per iteration (templeSparseRing: 768 -> 1509 px took 120 iterations over three
+// adjustments, 1 s of its 1.9 s). The search therefore runs one adjustment, no filtering rounds,
+// on max_tracks_per_view well-spread landmarks per view, for at most max_num_iterations
+// iterations; the caller verifies and solves again with the focal it found.
+struct FocalSearchSchedule {
+  size_t max_tracks_per_view = 30;
+  // templeSparseRing reached 1475 px in 100 iterations (the full solve then moved it by 8 % on
+  // its own front end's matches and had to solve again) and 1483-1490 px in 200.
+  int max_num_iterations = 200;
+};
+GlobalEngineOptions WithFocalSearchSchedule(GlobalEngineOptions options, const FocalSearchSchedule& schedule = {});
+
 struct StageTiming {
   std::string stage;  // "rotation averaging", "tracks", "positioning", "bundle adjustment", ...
   double seconds = 0.0;  // wall time

@@ -122,6 +122,17 @@ nlohmann::json CalibrationJson(const sfm_pruning::FocalCalibrationReport& report
           {"cameras", std::move(cameras)}};
 }
 
+std::set<sfm_pruning::IndexT> UncalibratedFocals(const sfm_pruning::FocalCalibrationReport& report,
+                                                 const sfm_pruning::SfmData& scene) {
+  std::set<sfm_pruning::IndexT> uncalibrated;
+  for (const sfm_pruning::IntrinsicFocalCalibration& entry : report.intrinsics) {
+    if (!entry.accepted && sfm_pruning::IsPinholeFamily(scene.intrinsics.at(entry.intrinsic_id).model())) {
+      uncalibrated.insert(entry.intrinsic_id);
+    }
+  }
+  return uncalibrated;
+}
+
 std::string MovedFocals(const sfm_pruning::SfmData& before, const sfm_pruning::SfmData& after,
                         const std::set<sfm_pruning::IndexT>& refined, double threshold) {
   std::string moved;

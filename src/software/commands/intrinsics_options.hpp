@@ -62,6 +62,11 @@ sfm_pruning::BundleAdjustmentOptions RefiningBundleOptions(const IntrinsicsSetti
 void ReportCalibration(const sfm_pruning::FocalCalibrationReport& report);
 nlohmann::json CalibrationJson(const sfm_pruning::FocalCalibrationReport& report);
 
+// The cameras of `report` whose focal the pairs could not determine (pinhole-family cameras the
+// calibration rejected): the reconstruction searches their focal with a quick solve first.
+std::set<sfm_pruning::IndexT> UncalibratedFocals(const sfm_pruning::FocalCalibrationReport& report,
+                                                 const sfm_pruning::SfmData& scene);
+
 // "camera 1: 768.0 px -> 1537.5 px, ..." for the refined cameras whose focal moved by more than
 // `threshold` (relative) between `before` and `after`; empty when none did.
 std::string MovedFocals(const sfm_pruning::SfmData& before, const sfm_pruning::SfmData& after,

@@ -98,8 +98,12 @@ struct Solution {
   sfm_pruning::RunViewGraph view_graph;
 };
 
+// kFocalSearch: the GLOBAL engine with WithFocalSearchSchedule, whatever --engine says (its model
+// serves only its focal, which the full solve refines again; the pruning would double its cost).
+enum class Schedule { kFull, kFocalSearch };
+
 Solution Solve(const EngineSettings& settings, const ReconstructionInput& input, const sfm_pruning::SfmData& scene,
-               const std::set<sfm_pruning::IndexT>& refined);
+               const std::set<sfm_pruning::IndexT>& refined, Schedule schedule);
 
 nlohmann::json TimingsJson(const EngineSettings& settings, const sfm_pruning::ViewGraphBuildReport& build,
                            const sfm_pruning::GlobalEngineReport& engine, const sfm_pruning::SfmData& model,
@@ -224,7 +228,7 @@ void AddSolverOptions(CLI::App* cmd, EngineSettings* settings) {
 namespace {
 
 Solution Solve(const EngineSettings& settings, const ReconstructionInput& input, const sfm_pruning::SfmData& scene,
-               const std::set<sfm_pruning::IndexT>& refined) {
+               const std::set<sfm_pruning::IndexT>& refined, Schedule schedule) {
   Solution solution;
   const auto verify_start = std::chrono::steady_clock::now();
   const sfm_pruning::ViewGraph graph = BuildVerifiedViewGraph(settings, input, &solution.build, &scene);
@@ -232,7 +236,7 @@ Solution Solve(const EngineSettings& settings, const ReconstructionInput& input,
   Info("view graph: " + std::to_string(graph.NumValidEdges()) + " edges of " +
        std::to_string(solution.build.num_pairs) + " pairs, " + std::to_string(graph.NumNodes()) + " views");
   const sfm_pruning::BundleAdjustmentOptions bundle = RefiningBundleOptions(settings.intrinsics, input, refined);
-  if (settings.engine == "GLOBAL_PRUNED") {
+  if (settings.engine == "GLOBAL_PRUNED" && schedule == Schedule::kFull) {
     sfm_pruning::PrunedGlobalEngineOptions options = PrunedEngineOptions(settings);
     options.engine.bundle = bundle;  // the final solve; the per-community solves hold the intrinsics
     sfm_pruning::PrunedGlobalEngineReport pruned;
@@ -245,6 +249,7 @@ Solution Solve(const EngineSettings& settings, const ReconstructionInput& input,
     options.num_threads = settings.num_threads;
     options.positioning = Positioning(settings);
     options.bundle = bundle;
+    if (schedule == Schedule::kFocalSearch) options = sfm_pruning::WithFocalSearchSchedule(options);
     RunGlobalEngine(options, graph, scene, input.features, &solution.model, &solution.report, TerminalProgressBar());
   }
   solution.view_graph = sfm_pruning::MakeRunViewGraph(settings.engine, graph, scene,
@@ -268,7 +273,28 @@ void RunReconstruction(const EngineSettings& settings, const ReconstructionInput
   }
   const double calibration_seconds = SecondsSince(calibration_start);
 
-  Solution solution = Solve(settings, input, scene, refined);
+  double focal_search_seconds = 0.0;
+  const std::set<sfm_pruning::IndexT> uncalibrated =
+      calibration && settings.intrinsics.focal ? UncalibratedFocals(*calibration, scene) : std::set<sfm_pruning::IndexT>{};
+  if (!uncalibrated.empty()) {
+    // Bundle adjustment will move these focals far from the guess, and the relative poses verified
+    // with the guess would have to be estimated and solved again: find the focal with a quick
+    // solve first, so that the full solve runs with it.
+    const auto search_start = std::chrono::steady_clock::now();
+    const Solution search = Solve(settings, input, scene, refined, Schedule::kFocalSearch);
+    focal_search_seconds = SecondsSince(search_start);
+    if (search.report.success) {
+      const std::string searched = MovedFocals(scene, search.model, uncalibrated, 0.0);
+      Info("focal search: " + (searched.empty() ? std::string("the guessed focal stays") : searched));
+      for (const sfm_pruning::IndexT id : uncalibrated) {
+        scene.intrinsics.at(id).SetFocalLength(search.model.intrinsics.at(id).FocalLength());
+      }
+    } else {
+      Info("focal search failed (" + search.report.message + "): solving from the guessed focal");
+    }
+  }
+
+  Solution solution = Solve(settings, input, scene, refined, Schedule::kFull);
   double first_pass_seconds = 0.0;
   const std::string moved = MovedFocals(scene, solution.model, refined, settings.intrinsics.refocus_threshold);
   if (solution.report.success && settings.intrinsics.focal && !moved.empty()) {
@@ -277,7 +303,7 @@ void RunReconstruction(const EngineSettings& settings, const ReconstructionInput
     Info("bundle adjustment moved the focal (" + moved + "): verifying and solving again with the refined intrinsics");
     first_pass_seconds = solution.verify_seconds + solution.report.total_seconds;
     for (const sfm_pruning::IndexT id : refined) scene.intrinsics.at(id) = solution.model.intrinsics.at(id);
-    solution = Solve(settings, input, scene, refined);
+    solution = Solve(settings, input, scene, refined, Schedule::kFull);
   }
   const sfm_pruning::ViewGraphBuildReport& build = solution.build;
   const sfm_pruning::GlobalEngineReport& report = solution.report;
@@ -296,6 +322,10 @@ void RunReconstruction(const EngineSettings& settings, const ReconstructionInput
   auto& stage_list = timings.at("stages");
   if (first_pass_seconds > 0.0) {
     stage_list.insert(stage_list.begin() + 1, nlohmann::json{{"stage", "first pass"}, {"seconds", first_pass_seconds}});
+  }
+  if (focal_search_seconds > 0.0) {
+    stage_list.insert(stage_list.begin() + 1,
+                      nlohmann::json{{"stage", "focal search"}, {"seconds", focal_search_seconds}});
   }
   if (calibration) {
     stage_list.insert(stage_list.begin() + 1,
