@@ -8,10 +8,10 @@
 
 #include <ceres/ceres.h>
 #include <ceres/normal_prior.h>
-#include <ceres/product_manifold.h>
 
 #include "sfm_pruning/global/bundle_observations.hpp"
 #include "sfm_pruning/global/bundle_parameters.hpp"
+#include "sfm_pruning/global/bundle_pose_manifold.hpp"
 #include "sfm_pruning/global/bundle_reprojection_cost.hpp"
 
 namespace sfm_pruning {
@@ -85,15 +85,13 @@ IndexT FirstPoseId(const SfmData& data, const BundleParameters& parameters) {
 }
 
 // The poses' manifolds, with the gauge of the header comment; returns the pose held constant
-// (or kUndefinedIndex). Every pose is one block (quaternion, centre): the quaternion moves on its
-// manifold, the centre freely, except on the scale gauge's pose, where one coordinate is fixed.
+// (or kUndefinedIndex). Every pose is one block (quaternion, centre) on a PoseManifold, which on
+// the scale gauge's pose holds one centre coordinate.
 IndexT SetPoseManifoldsAndGauge(const BundleAdjustmentOptions& options, const SfmData& data,
                                 BundleParameters* parameters, ceres::Problem* problem) {
-  using FreePose = ceres::ProductManifold<ceres::QuaternionManifold, ceres::EuclideanManifold<3>>;
-  using ScaleGaugePose = ceres::ProductManifold<ceres::QuaternionManifold, ceres::SubsetManifold>;
   const IndexT first = options.fix_first_pose ? FirstPoseId(data, *parameters) : kUndefinedIndex;
   IndexT second = kUndefinedIndex;
-  int axis = 0;
+  int axis = -1;
   if (first != kUndefinedIndex && options.fix_scale) {
     const Eigen::Map<const Eigen::Vector3d> first_center(parameters->center(first));
     double max_distance = 0.0;
@@ -110,12 +108,7 @@ IndexT SetPoseManifoldsAndGauge(const BundleAdjustmentOptions& options, const Sf
     }
   }
   for (const auto& [pose_id, slot] : parameters->pose_slots()) {
-    double* block = parameters->pose(pose_id);
-    if (pose_id == second) {
-      problem->SetManifold(block, new ScaleGaugePose(ceres::QuaternionManifold(), ceres::SubsetManifold(3, {axis})));
-    } else {
-      problem->SetManifold(block, new FreePose());
-    }
+    problem->SetManifold(parameters->pose(pose_id), new bundle::PoseManifold(pose_id == second ? axis : -1));
   }
   if (first != kUndefinedIndex) problem->SetParameterBlockConstant(parameters->pose(first));
   return first;
