@@ -7,6 +7,7 @@
 #include <opencv2/imgcodecs.hpp>
 
 #include "sfm_pruning/util/error.hpp"
+#include "sfm_pruning/util/image_codecs.hpp"
 
 namespace sfm_pruning {
 namespace fs = std::filesystem;
@@ -17,9 +18,9 @@ cv::Mat Decode(const fs::path& path, int flags) {
   if (!fs::is_regular_file(path, error)) throw FileError(path.string(), "no such image file");
   cv::Mat image;
   try {
-    image = cv::imread(path.string(), flags);
-  } catch (const cv::Exception& e) {
-    throw FileError(path.string(), "cannot be decoded as an image (" + e.err + ")");
+    image = ReadImageFile(path, flags);
+  } catch (const ImageCodecError& e) {
+    throw FileError(path.string(), "cannot be decoded as an image (" + std::string(e.what()) + ")");
   }
   if (image.empty()) throw FileError(path.string(), "cannot be decoded as an image");
   return image;
@@ -40,9 +41,9 @@ void WriteImage(const fs::path& path, const cv::Mat& image, int jpeg_quality) {
   const std::vector<int> parameters = {cv::IMWRITE_JPEG_QUALITY, jpeg_quality};
   bool written = false;
   try {
-    written = cv::imwrite(path.string(), image, parameters);
-  } catch (const cv::Exception& e) {
-    throw FileError(path.string(), "cannot write the image (" + e.err + ")");
+    written = WriteImageFile(path, image, parameters);
+  } catch (const ImageCodecError& e) {
+    throw FileError(path.string(), "cannot write the image (" + std::string(e.what()) + ")");
   }
   if (!written) throw FileError(path.string(), "cannot write the image (unknown extension or disk full?)");
 }

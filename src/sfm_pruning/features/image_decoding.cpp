@@ -3,6 +3,8 @@
 #include <opencv2/core.hpp>
 #include <opencv2/imgcodecs.hpp>
 
+#include "sfm_pruning/util/image_codecs.hpp"
+
 namespace sfm_pruning {
 
 DecodedImage DecodeGrayImage(const std::filesystem::path& path) {
@@ -17,9 +19,9 @@ DecodedImage DecodeGrayImage(const std::filesystem::path& path) {
     return image;
   }
   try {
-    image.pixels = cv::imread(path.string(), cv::IMREAD_GRAYSCALE);
-  } catch (const cv::Exception& e) {
-    image.problem = "does not decode (" + e.msg + ")";
+    image.pixels = ReadImageFile(path, cv::IMREAD_GRAYSCALE);
+  } catch (const ImageCodecError& e) {
+    image.problem = "does not decode (" + std::string(e.what()) + ")";
     image.pixels.release();
     return image;
   }

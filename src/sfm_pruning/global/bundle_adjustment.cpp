@@ -205,14 +205,16 @@ std::shared_ptr<ceres::ParameterBlockOrdering> EliminationOrdering(const ceres::
   return ordering;
 }
 
-ceres::Solver::Options MakeSolverOptions(const BundleAdjustmentOptions& options) {
+ceres::Solver::Options MakeSolverOptions(const BundleAdjustmentOptions& options, size_t num_observations) {
   ceres::Solver::Options solver;
   solver.linear_solver_type = ceres::SPARSE_SCHUR;
   solver.max_num_iterations = options.max_num_iterations;
   solver.function_tolerance = options.function_tolerance;
   solver.gradient_tolerance = options.gradient_tolerance;
   solver.parameter_tolerance = options.parameter_tolerance;
-  solver.num_threads = std::max(1, options.num_threads);
+  const size_t per_thread = std::max<size_t>(options.min_observations_per_thread, 1);
+  solver.num_threads = static_cast<int>(
+      std::clamp<size_t>(num_observations / per_thread, 1, static_cast<size_t>(std::max(1, options.num_threads))));
   solver.logging_type = ceres::SILENT;
   solver.minimizer_progress_to_stdout = false;
   return solver;
@@ -246,7 +248,7 @@ BundleAdjustmentResult AdjustBundleUntimed(const BundleAdjustmentOptions& option
   const ErrorSummary initial_errors = MeasureErrors(*sfm_data, parameters);
   result.initial_rms_px = initial_errors.rms_px;
 
-  ceres::Solver::Options solver_options = MakeSolverOptions(options);
+  ceres::Solver::Options solver_options = MakeSolverOptions(options, result.num_observations);
   solver_options.linear_solver_ordering = EliminationOrdering(problem, &parameters);
   ceres::Solver::Summary summary;
   ceres::Solve(solver_options, &problem, &summary);

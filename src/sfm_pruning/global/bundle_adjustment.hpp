@@ -61,6 +61,11 @@ struct BundleAdjustmentOptions {
   // concurrency). 1 gives bitwise reproducible results; with more threads Ceres sums partial
   // costs and Schur blocks in scheduling order, so results can differ in the last bits.
   int num_threads = 1;
+  // Observations per Ceres thread: fewer threads on smaller problems. Ceres' threads meet at
+  // every step of every iteration, which on a few thousand observations costs more than the
+  // parallel evaluation brings (templeSparseRing's focal search, 583 observations: 0.17 s with 2
+  // threads, 0.11 s with 1; its 4,750-observation adjustments take the same time either way).
+  size_t min_observations_per_thread = 2500;
 };
 
 struct BundleAdjustmentResult {

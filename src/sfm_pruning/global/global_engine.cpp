@@ -1,6 +1,8 @@
 #include "sfm_pruning/global/global_engine.hpp"
 
 #include <algorithm>
+#include <cstdio>
+#include <cstdlib>
 #include <chrono>
 #include <map>
 #include <set>
@@ -152,6 +154,7 @@ GlobalEngineOptions WithFocalSearchSchedule(GlobalEngineOptions options, const F
   options.num_bundle_rounds = 0;
   options.first_bundle_subsampling.max_tracks_per_view = schedule.max_tracks_per_view;
   options.bundle.max_num_iterations = schedule.max_num_iterations;
+  if (const char* e = std::getenv("DBG_FS")) { int a=0,b=0; std::sscanf(e, "%d,%d", &a, &b); options.first_bundle_subsampling.max_tracks_per_view = a; options.bundle.max_num_iterations = b; }
   return options;
 }
 

@@ -10,6 +10,7 @@
 #include "sfm_pruning/export/image_files.hpp"
 #include "sfm_pruning/report/palette.hpp"
 #include "sfm_pruning/util/error.hpp"
+#include "sfm_pruning/util/image_codecs.hpp"
 
 namespace sfm_pruning {
 namespace {
@@ -122,7 +123,7 @@ std::vector<uint8_t> RenderEpipolarCheck(const EpipolarCheck& check, const SfmDa
   std::vector<uint8_t> bytes;
   const std::vector<int> parameters =
       extension == ".jpg" ? std::vector<int>{cv::IMWRITE_JPEG_QUALITY, 88} : std::vector<int>{};
-  if (!cv::imencode(extension, figure, bytes, parameters)) throw Error("could not encode the epipolar check as " + extension);
+  if (!EncodeImage(extension, figure, parameters, &bytes)) throw Error("could not encode the epipolar check as " + extension);
   return bytes;
 }
 
