@@ -1,8 +1,6 @@
 #include "sfm_pruning/global/global_engine.hpp"
 
 #include <algorithm>
-#include <cstdio>
-#include <cstdlib>
 #include <chrono>
 #include <map>
 #include <set>
@@ -96,6 +94,7 @@ bool RunStages(const GlobalEngineOptions& options, const ViewGraph& graph, const
       positioning.solver.seed = options.seed;
       positioning.solver.num_threads = options.num_threads;
       positioning.solver.function_tolerance = options.positioning_function_tolerance;
+      positioning.solver.max_num_iterations = options.positioning_max_num_iterations;
       positioning.solver.progress = progress;
       report->positioning = PositionCamerasAndPoints(positioning, rotations, tracks.tracks, features, out);
     } else {
@@ -103,6 +102,7 @@ bool RunStages(const GlobalEngineOptions& options, const ViewGraph& graph, const
       averaging.solver.seed = options.seed;
       averaging.solver.num_threads = options.num_threads;
       averaging.solver.function_tolerance = options.positioning_function_tolerance;
+      averaging.solver.max_num_iterations = options.positioning_max_num_iterations;
       averaging.solver.progress = progress;
       report->positioning =
           PositionCamerasByTranslationAveraging(averaging, kept, rotations, tracks.tracks, features, out).positioning;
@@ -154,7 +154,6 @@ GlobalEngineOptions WithFocalSearchSchedule(GlobalEngineOptions options, const F
   options.num_bundle_rounds = 0;
   options.first_bundle_subsampling.max_tracks_per_view = schedule.max_tracks_per_view;
   options.bundle.max_num_iterations = schedule.max_num_iterations;
-  if (const char* e = std::getenv("DBG_FS")) { int a=0,b=0; std::sscanf(e, "%d,%d", &a, &b); options.first_bundle_subsampling.max_tracks_per_view = a; options.bundle.max_num_iterations = b; }
   return options;
 }
 

@@ -283,7 +283,6 @@ void RunReconstruction(const EngineSettings& settings, const ReconstructionInput
     const auto search_start = std::chrono::steady_clock::now();
     const Solution search = Solve(settings, input, scene, refined, Schedule::kFocalSearch);
     focal_search_seconds = SecondsSince(search_start);
-    for (auto& b : search.report.bundle_adjustments) std::fprintf(stderr, "DBG ba %.3f it %d %s obs %zu\n", b.seconds, (int)b.num_iterations, b.termination.c_str(), (size_t)b.num_observations);
     if (search.report.success) {
       const std::string searched = MovedFocals(scene, search.model, uncalibrated, 0.0);
       Info("focal search: " + (searched.empty() ? std::string("the guessed focal stays") : searched));
