@@ -95,6 +95,7 @@ bool RunStages(const GlobalEngineOptions& options, const ViewGraph& graph, const
       positioning.solver.num_threads = options.num_threads;
       positioning.solver.function_tolerance = options.positioning_function_tolerance;
       positioning.solver.max_num_iterations = options.positioning_max_num_iterations;
+      positioning.solver.max_num_resolve_iterations = options.positioning_max_num_resolve_iterations;
       positioning.solver.progress = progress;
       report->positioning = PositionCamerasAndPoints(positioning, rotations, tracks.tracks, features, out);
     } else {
@@ -103,6 +104,7 @@ bool RunStages(const GlobalEngineOptions& options, const ViewGraph& graph, const
       averaging.solver.num_threads = options.num_threads;
       averaging.solver.function_tolerance = options.positioning_function_tolerance;
       averaging.solver.max_num_iterations = options.positioning_max_num_iterations;
+      averaging.solver.max_num_resolve_iterations = options.positioning_max_num_resolve_iterations;
       averaging.solver.progress = progress;
       report->positioning =
           PositionCamerasByTranslationAveraging(averaging, kept, rotations, tracks.tracks, features, out).positioning;

@@ -104,14 +104,15 @@ ceres::Solver::Summary SolveOnce(const PositioningSolverOptions& options, const 
   // the re-solve with 3 % fewer rays (35 flops per entry: simplicial), and Eigen's simplicial
   // factorisation takes 0.09 s for both.
   solver_options.sparse_linear_algebra_library_type = ceres::EIGEN_SPARSE;
-  solver_options.max_num_iterations = options.max_num_iterations;
+  const int max_num_iterations = warm_start ? options.max_num_resolve_iterations : options.max_num_iterations;
+  solver_options.max_num_iterations = max_num_iterations;
   solver_options.function_tolerance = options.function_tolerance;
   solver_options.gradient_tolerance = options.gradient_tolerance;
   solver_options.parameter_tolerance = options.parameter_tolerance;
   solver_options.num_threads = options.num_threads;
   solver_options.logging_type = ceres::SILENT;
   solver_options.minimizer_progress_to_stdout = false;
-  ProgressReporter reporter(options.progress, stage, options.max_num_iterations);
+  ProgressReporter reporter(options.progress, stage, max_num_iterations);
   if (options.progress) solver_options.callbacks.push_back(&reporter);
 
   ceres::Solver::Summary ceres_summary;

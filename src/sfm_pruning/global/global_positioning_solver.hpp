@@ -54,7 +54,9 @@ struct PositioningSolverOptions {
   int num_rejection_rounds = 1;
   double rejection_threshold_deg = 5.0;
 
-  int max_num_iterations = 200;  // per solve
+  int max_num_iterations = 200;  // the solve from the random start
+  // Each re-solve after a rejection round starts from the previous solution.
+  int max_num_resolve_iterations = 200;
   // Tight by default: from a random start the relative cost decrease stays large until the
   // solution is reached, and noise-free data should converge to its exact positions.
   double function_tolerance = 1e-10;
