@@ -13,8 +13,8 @@
 //
 // The scale gauge (bundle_adjustment.hpp) fixes one centre coordinate of one pose. Its manifold
 // keeps the 6 tangent values and ignores the fixed one (its Jacobian column is zero, so the step
-// along it is zero), instead of a 5-value tangent: all pose blocks keep one size, and with the
-// intrinsics held the Schur eliminator runs its fixed-size <2, 3, 6> specialisation.
+// along it is zero), instead of a 5-value tangent: all pose blocks keep one size, which Ceres'
+// fixed-size Schur specialisations need (with refined intrinsics the eliminator stays dynamic).
 #pragma once
 
 #include <ceres/manifold.h>
