@@ -257,6 +257,29 @@ Solution Solve(const EngineSettings& settings, const ReconstructionInput& input,
   return solution;
 }
 
+// The cameras whose focal the calibration could not determine: bundle adjustment will move their
+// focal far from the guess, and the relative poses verified with the guess would have to be
+// estimated and solved again. A quick solve finds the focal first, written into `scene`, so that
+// the full solve runs with it. Returns the search's wall time (0 when no camera needed one).
+double SearchUncalibratedFocals(const EngineSettings& settings, const ReconstructionInput& input,
+                                const sfm_pruning::FocalCalibrationReport& calibration,
+                                const std::set<sfm_pruning::IndexT>& refined, sfm_pruning::SfmData* scene) {
+  const std::set<sfm_pruning::IndexT> uncalibrated = UncalibratedFocals(calibration, *scene);
+  if (uncalibrated.empty()) return 0.0;
+  const auto start = std::chrono::steady_clock::now();
+  const Solution search = Solve(settings, input, *scene, refined, Schedule::kFocalSearch);
+  if (search.report.success) {
+    const std::string searched = MovedFocals(*scene, search.model, uncalibrated, 0.0);
+    Info("focal search: " + (searched.empty() ? std::string("the guessed focal stays") : searched));
+    for (const sfm_pruning::IndexT id : uncalibrated) {
+      scene->intrinsics.at(id).SetFocalLength(search.model.intrinsics.at(id).FocalLength());
+    }
+  } else {
+    Info("focal search failed (" + search.report.message + "): solving from the guessed focal");
+  }
+  return SecondsSince(start);
+}
+
 }  // namespace
 
 void RunReconstruction(const EngineSettings& settings, const ReconstructionInput& input, const fs::path& output,
@@ -273,26 +296,9 @@ void RunReconstruction(const EngineSettings& settings, const ReconstructionInput
   }
   const double calibration_seconds = SecondsSince(calibration_start);
 
-  double focal_search_seconds = 0.0;
-  const std::set<sfm_pruning::IndexT> uncalibrated =
-      calibration && settings.intrinsics.focal ? UncalibratedFocals(*calibration, scene) : std::set<sfm_pruning::IndexT>{};
-  if (!uncalibrated.empty()) {
-    // Bundle adjustment will move these focals far from the guess, and the relative poses verified
-    // with the guess would have to be estimated and solved again: find the focal with a quick
-    // solve first, so that the full solve runs with it.
-    const auto search_start = std::chrono::steady_clock::now();
-    const Solution search = Solve(settings, input, scene, refined, Schedule::kFocalSearch);
-    focal_search_seconds = SecondsSince(search_start);
-    if (search.report.success) {
-      const std::string searched = MovedFocals(scene, search.model, uncalibrated, 0.0);
-      Info("focal search: " + (searched.empty() ? std::string("the guessed focal stays") : searched));
-      for (const sfm_pruning::IndexT id : uncalibrated) {
-        scene.intrinsics.at(id).SetFocalLength(search.model.intrinsics.at(id).FocalLength());
-      }
-    } else {
-      Info("focal search failed (" + search.report.message + "): solving from the guessed focal");
-    }
-  }
+  const double focal_search_seconds =
+      calibration && settings.intrinsics.focal ? SearchUncalibratedFocals(settings, input, *calibration, refined, &scene)
+                                               : 0.0;
 
   Solution solution = Solve(settings, input, scene, refined, Schedule::kFull);
   double first_pass_seconds = 0.0;
