@@ -121,40 +121,56 @@ TEST(SubgraphAlignment, RansacRemovesEdgesToTheTwinStructure) {
   }
 }
 
-// Twin edges outnumber the true ones but match only the copied third of the structure: the
-// paper's largest consensus keeps the twins, the match coverage keeps the true edges.
-TEST(SubgraphAlignment, MatchCoverageKeepsTrueEdgesOutnumberedByTwinEdges) {
+// Five true edges and ten twin edges between two arcs of eight views. A true edge matches the first
+// `true_points` landmarks of i (all when 0), a twin edge `twin_points` of them on a copy of the
+// structure turned 90° about z.
+struct OutnumberedTrueEdges {
   PruningTestScene scene = MakePruningTestScene(16, 60, 11);
   const std::vector<ViewPair> true_edges = {{5, 8}, {6, 8}, {7, 8}, {6, 9}, {7, 9}};  // 11°–34° apart
   // View v sits at 11.25°·v on the arc; the copy is the structure turned 90° about z, so PnP
   // puts j of a twin edge (i, j) 90° back along the arc, next to i.
   const std::vector<ViewPair> twin_edges = {{0, 8}, {1, 9},  {2, 10}, {3, 11}, {4, 12},
                                             {5, 13}, {6, 14}, {7, 15}, {0, 9}, {1, 10}};
-  for (const ViewPair& edge : true_edges) scene.AddExactEdge(edge.first, edge.second);
-  Similarity twin;
-  twin.rotation = ExpSO3(DegToRad(90.0) * Eigen::Vector3d::UnitZ());
-  for (const ViewPair& edge : twin_edges) scene.AddTwinEdge(edge.first, edge.second, twin, 20);
-  const SubgraphSolution k1 = scene.Solution(kViewsK1, RandomSimilarity(1, kScaleK1));
-  const SubgraphSolution k2 = scene.Solution(kViewsK2, RandomSimilarity(2, kScaleK2));
-  std::vector<ViewPair> sorted_true = true_edges;
-  std::sort(sorted_true.begin(), sorted_true.end());
-  std::vector<ViewPair> sorted_twins = twin_edges;
-  std::sort(sorted_twins.begin(), sorted_twins.end());
+  SubgraphSolution k1;
+  SubgraphSolution k2;
+
+  OutnumberedTrueEdges(size_t true_points, size_t twin_points) {
+    for (const ViewPair& edge : true_edges) scene.AddExactEdge(edge.first, edge.second, true_points);
+    Similarity twin;
+    twin.rotation = ExpSO3(DegToRad(90.0) * Eigen::Vector3d::UnitZ());
+    for (const ViewPair& edge : twin_edges) scene.AddTwinEdge(edge.first, edge.second, twin, twin_points);
+    k1 = scene.Solution(kViewsK1, RandomSimilarity(1, kScaleK1));
+    k2 = scene.Solution(kViewsK2, RandomSimilarity(2, kScaleK2));
+  }
+  static std::vector<ViewPair> Sorted(std::vector<ViewPair> edges) {
+    std::sort(edges.begin(), edges.end());
+    return edges;
+  }
+  SubgraphAlignmentResult Align(const SubgraphAlignmentOptions& options) const {
+    return AlignSubgraphPair(scene.graph, k1, k2, scene.views_and_intrinsics, scene.features, options);
+  }
+};
+
+// Twin edges outnumber the true ones but match only the copied third of the structure: the
+// paper's largest consensus keeps the twins, the match coverage keeps the true edges.
+TEST(SubgraphAlignment, MatchCoverageKeepsTrueEdgesOutnumberedByTwinEdges) {
+  const OutnumberedTrueEdges pair(0, 20);
+  const std::vector<ViewPair>& true_edges = pair.true_edges;
+  const std::vector<ViewPair> sorted_true = OutnumberedTrueEdges::Sorted(pair.true_edges);
+  const std::vector<ViewPair> sorted_twins = OutnumberedTrueEdges::Sorted(pair.twin_edges);
 
   // Samples of two edges: with 0.4 · 15 = 6 a clean sample is rare (the engine caps it too).
   SubgraphAlignmentOptions options;
   options.sample_fraction = 0.15;
   SubgraphAlignmentOptions paper = options;
   paper.hypothesis_selection = SubgraphAlignmentOptions::HypothesisSelection::kLargestConsensus;
-  const SubgraphAlignmentResult largest =
-      AlignSubgraphPair(scene.graph, k1, k2, scene.views_and_intrinsics, scene.features, paper);
+  const SubgraphAlignmentResult largest = pair.Align(paper);
   ASSERT_EQ(largest.status, SubgraphAlignmentStatus::kAligned);
   EXPECT_EQ(largest.hypotheses.size(), 1u);
   EXPECT_EQ(largest.KeptEdges(), sorted_twins);
   EXPECT_EQ(largest.RemovedEdges(), sorted_true);
 
-  const SubgraphAlignmentResult coverage =
-      AlignSubgraphPair(scene.graph, k1, k2, scene.views_and_intrinsics, scene.features, options);
+  const SubgraphAlignmentResult coverage = pair.Align(options);
   ASSERT_EQ(coverage.status, SubgraphAlignmentStatus::kAligned);
   EXPECT_EQ(coverage.KeptEdges(), sorted_true);
   EXPECT_EQ(coverage.RemovedEdges(), sorted_twins);
@@ -178,6 +194,31 @@ TEST(SubgraphAlignment, MatchCoverageKeepsTrueEdgesOutnumberedByTwinEdges) {
       EXPECT_EQ(decision.verdict, InterSubgraphVerdict::kRotationDeviation);
     }
   }
+}
+
+// Real images: true edges re-detect under half of what they should see, so both candidates fall
+// below the break-even. The pair's candidates are then compared with each other: the twins match
+// 12 of the 60 landmarks next to i, under half the true edges' share, and are ruled out.
+TEST(SubgraphAlignment, BelowTheBreakEvenTheCandidatesAreComparedWithEachOther) {
+  const OutnumberedTrueEdges pair(25, 12);
+  SubgraphAlignmentOptions options;
+  options.sample_fraction = 0.15;
+  const SubgraphAlignmentResult relative = pair.Align(options);
+  ASSERT_EQ(relative.status, SubgraphAlignmentStatus::kAligned);
+  ASSERT_EQ(relative.hypotheses.size(), 2u);
+  EXPECT_EQ(relative.hypotheses[0].consensus_size, 10u);  // the twins
+  EXPECT_EQ(relative.hypotheses[1].consensus_size, 5u);
+  EXPECT_LT(relative.hypotheses[0].coverage_score, 0.0);
+  EXPECT_LT(relative.hypotheses[1].coverage_score, 0.0);
+  EXPECT_NEAR(relative.hypotheses[0].Coverage(), 12.0 / 60.0, 1e-12);
+  EXPECT_LT(relative.hypotheses[0].Coverage(), 0.5 * relative.hypotheses[1].Coverage());
+  EXPECT_EQ(relative.selected_hypothesis, 1);
+  EXPECT_EQ(relative.KeptEdges(), OutnumberedTrueEdges::Sorted(pair.true_edges));
+
+  options.relative_coverage_break_even = 0.0;  // the largest of all wins
+  const SubgraphAlignmentResult largest = pair.Align(options);
+  EXPECT_EQ(largest.selected_hypothesis, 0);
+  EXPECT_EQ(largest.KeptEdges(), OutnumberedTrueEdges::Sorted(pair.twin_edges));
 }
 
 TEST(SubgraphAlignment, SameSeedSameDecisions) {

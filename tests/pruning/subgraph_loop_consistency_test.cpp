@@ -3,46 +3,14 @@
 
 #include <gtest/gtest.h>
 
-#include "pruning/pruning_test_scene.hpp"
-#include "sfm_pruning/geometry/so3.hpp"
+#include "pruning/subgraph_loop_test_scene.hpp"
 #include "sfm_pruning/pruning/subgraph_loop_consistency.hpp"
 
 namespace sfm_pruning {
 namespace {
 
-using testing::RandomSimilarity;
-
-// Subgraph k lives in the frame frames[k] (x_k = frames[k](x_world)); its cameras sit around
-// the world point centres[k] with radius 1.
-struct LoopScene {
-  std::vector<Similarity3> frames;
-  std::vector<SubgraphFrame> subgraphs;
-
-  explicit LoopScene(size_t n) {
-    for (size_t k = 0; k < n; ++k) {
-      frames.push_back(RandomSimilarity(100 + k, 0.5 + 0.3 * static_cast<double>(k)));
-      const Eigen::Vector3d world_centre(4.0 * std::cos(static_cast<double>(k)), 4.0 * std::sin(static_cast<double>(k)),
-                                         0.0);
-      SubgraphFrame frame;
-      frame.centre = frames[k].Apply(world_centre);
-      frame.radius = frames[k].scale;
-      subgraphs.push_back(frame);
-    }
-  }
-  // The exact link k1 -> k2 (k1 < k2), optionally followed by a wrong motion `error` in k1's frame.
-  SubgraphLink Link(int k1, int k2, size_t support, const Similarity3& error = {}) const {
-    const Similarity3 exact = frames[static_cast<size_t>(k1)].Compose(frames[static_cast<size_t>(k2)].Inverse());
-    return {k1, k2, error.Compose(exact), support};
-  }
-};
-
-// A twin-like error: a turn of 60° about an axis through k1's centre.
-Similarity3 TurnAbout(const Eigen::Vector3d& centre, double degrees) {
-  Similarity3 turn;
-  turn.rotation = ExpSO3(DegToRad(degrees) * Eigen::Vector3d(0.2, 0.3, 1.0).normalized());
-  turn.translation = centre - turn.rotation * centre;
-  return turn;
-}
+using testing::LoopScene;
+using testing::TurnAbout;
 
 TEST(SubgraphLoops, ExactTransformsCloseEveryTriangle) {
   const LoopScene scene(4);

@@ -158,17 +158,30 @@ std::optional<Candidate> RansacOverPool(const std::vector<ChainedRelativePose>& 
   return best;
 }
 
-// Σ over the consensus of (matched − break_even · expected) landmarks (EdgePlacement coverage).
-double CoverageScore(const Consensus& consensus, const std::vector<EdgeCoverage>& coverage, const Options& options,
-                     size_t* expected, size_t* matched) {
-  *expected = 0;
-  *matched = 0;
+// The consensus's coverage sums and its score Σ (matched − break_even · expected) landmarks.
+void ScoreCoverage(const Consensus& consensus, const std::vector<EdgeCoverage>& coverage, const Options& options,
+                   AlignmentHypothesis* summary) {
   for (size_t k = 0; k < coverage.size(); ++k) {
     if (!consensus.inlier[k]) continue;
-    *expected += coverage[k].expected;
-    *matched += coverage[k].matched;
+    summary->expected_landmarks += coverage[k].expected;
+    summary->matched_landmarks += coverage[k].matched;
   }
-  return static_cast<double>(*matched) - options.coverage_break_even * static_cast<double>(*expected);
+  summary->coverage_score =
+      static_cast<double>(summary->matched_landmarks) -
+      options.coverage_break_even * static_cast<double>(summary->expected_landmarks);
+}
+
+// When every candidate falls below the absolute break-even: a candidate whose coverage is below
+// relative_coverage_break_even times the best candidate's is ruled out (none with
+// relative_coverage_break_even = 0: the largest of all wins).
+std::vector<bool> RelativelyRuledOut(const std::vector<AlignmentHypothesis>& hypotheses, const Options& options) {
+  double best = 0.0;
+  for (const AlignmentHypothesis& h : hypotheses) best = std::max(best, h.Coverage());
+  std::vector<bool> out;
+  for (const AlignmentHypothesis& h : hypotheses) {
+    out.push_back(h.Coverage() < options.relative_coverage_break_even * best);
+  }
+  return out;
 }
 
 // Runs RANSAC over the voting edges and writes the verdicts of the voters into `result`.
@@ -210,16 +223,20 @@ void RunRansac(const std::vector<ChainedRelativePose>& chains, const std::vector
     AlignmentHypothesis summary;
     summary.consensus_size = candidates[c].consensus.count;
     summary.beta = candidates[c].hypothesis.beta;
-    summary.coverage_score = CoverageScore(candidates[c].consensus, coverage, options, &summary.expected_landmarks,
-                                           &summary.matched_landmarks);
+    ScoreCoverage(candidates[c].consensus, coverage, options, &summary);
     result->hypotheses.push_back(summary);
   }
   // Candidates whose edges miss more landmarks than the break-even are ruled out; the largest
-  // consensus among the others wins (the paper's rule). If all are ruled out, the largest of all.
-  const auto ruled_out = [&](size_t c) { return result->hypotheses[c].coverage_score < 0.0; };
+  // consensus among the others wins (the paper's rule). If all are ruled out (real images), the
+  // candidates are compared with each other instead (RelativelyRuledOut).
+  std::vector<bool> ruled_out(candidates.size());
+  for (size_t c = 0; c < candidates.size(); ++c) ruled_out[c] = result->hypotheses[c].coverage_score < 0.0;
+  if (std::all_of(ruled_out.begin(), ruled_out.end(), [](bool out) { return out; })) {
+    ruled_out = RelativelyRuledOut(result->hypotheses, options);
+  }
   for (size_t c = 1; c < candidates.size(); ++c) {
     const bool larger = result->hypotheses[c].consensus_size > result->hypotheses[chosen].consensus_size;
-    const bool better = ruled_out(chosen) ? (!ruled_out(c) || larger) : (!ruled_out(c) && larger);
+    const bool better = ruled_out[chosen] ? (!ruled_out[c] || larger) : (!ruled_out[c] && larger);
     if (better) chosen = c;
   }
   result->selected_hypothesis = static_cast<int>(chosen);

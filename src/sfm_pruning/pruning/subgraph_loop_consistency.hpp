@@ -16,7 +16,8 @@
 //   translation: how far it moves a's mean camera centre, as a fraction of the triangle's mean
 //             side length (distances between the three subgraph centres in a's frame, at least
 //             a's own radius), at most max_translation_fraction.
-// Rejection is greedy and deterministic: while some pair lies in more inconsistent triangles than
+// Rejection is greedy and deterministic (then a second pass over longer cycles,
+// subgraph_cycle_consistency.hpp): while some pair lies in more inconsistent triangles than
 // consistent ones, the pair with the largest (inconsistent − consistent) count is rejected (ties:
 // the smaller support, then the later pair), and the triangles are counted again without it. A
 // pair in no triangle cannot be judged (it is kept); a rejected pair always lies in a triangle
@@ -24,6 +25,7 @@
 #pragma once
 
 #include <cstddef>
+#include <limits>
 #include <vector>
 
 #include <Eigen/Core>
@@ -41,6 +43,9 @@ struct SubgraphLoopOptions {
   double max_rotation_deg = 5.0;
   double max_scale_ratio = 2.0;
   double max_translation_fraction = 0.25;
+  // Second pass, cycles of 4..max_cycle_length subgraphs (subgraph_cycle_consistency.hpp); below 4
+  // the pass is off.
+  size_t max_cycle_length = 6;
 };
 
 // A subgraph's mean camera centre and radius (median distance of its centres to the mean), in its
@@ -50,12 +55,15 @@ struct SubgraphFrame {
   double radius = 0.0;
 };
 
-// One aligned subgraph pair: k1 < k2, X_k1 = k2_to_k1(X_k2); support = consensus edges.
+// One aligned subgraph pair: k1 < k2, X_k1 = k2_to_k1(X_k2); support = consensus edges;
+// coverage = AlignmentHypothesis::Coverage() of the selected hypothesis (matched / expected
+// landmarks; infinity when nothing was expected, which is no evidence against the pair).
 struct SubgraphLink {
   int k1 = -1;
   int k2 = -1;
   Similarity3 k2_to_k1;
   size_t support = 0;
+  double coverage = std::numeric_limits<double>::infinity();
 };
 
 struct SubgraphTriangle {
@@ -66,10 +74,21 @@ struct SubgraphTriangle {
   bool consistent = true;
 };
 
+// A cycle of four or more subgraphs judged by the second pass (subgraph_cycle_consistency.hpp).
+struct SubgraphCycle {
+  std::vector<int> subgraphs;  // c0 -> c1 -> ... -> c(l-1) -> c0
+  double rotation_deg = 0.0;
+  double scale_ratio = 1.0;
+  double translation_fraction = 0.0;
+  size_t loop_factor = 1;  // ⌊(l − 1) / 2⌋: the triangle bounds are widened by it
+  bool consistent = true;
+};
+
 struct RejectedLink {
   size_t link = 0;  // index into the links given
   size_t inconsistent_triangles = 0;  // at the time of rejection
   size_t consistent_triangles = 0;
+  int cycle = -1;  // the second pass: index into SubgraphLoopResult::cycles of the broken cycle
 };
 
 struct SubgraphLoopResult {
@@ -77,6 +96,7 @@ struct SubgraphLoopResult {
   // Per input link, the triangles it is in before any rejection.
   std::vector<size_t> consistent_triangles;
   std::vector<size_t> inconsistent_triangles;
+  std::vector<SubgraphCycle> cycles;      // the cycles the second pass judged, in order
   std::vector<RejectedLink> rejected;  // in rejection order
 };
 

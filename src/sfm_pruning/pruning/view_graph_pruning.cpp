@@ -94,14 +94,19 @@ void PruneViewGraph(const ViewGraphPruningOptions& options, ViewGraph* graph, co
   std::vector<SubgraphLink> links;
   std::vector<size_t> pair_of_link;
   for (size_t p = 0; p < pairs.size(); ++p) {
-    if (!alignments[p].has_frame_transform) continue;
-    links.push_back({pairs[p].first, pairs[p].second, alignments[p].k2_to_k1, alignments[p].consensus_size});
+    const SubgraphAlignmentResult& alignment = alignments[p];
+    // A transform no connecting edge agrees with is no evidence about the loops (real street: two
+    // such pairs, fitted on samples of doppelgangers, closed a triangle with each other).
+    if (!alignment.has_frame_transform || alignment.consensus_size == 0) continue;
+    const AlignmentHypothesis& selected = alignment.hypotheses[static_cast<size_t>(alignment.selected_hypothesis)];
+    links.push_back({pairs[p].first, pairs[p].second, alignment.k2_to_k1, alignment.consensus_size, selected.Coverage()});
     pair_of_link.push_back(p);
   }
   std::vector<SubgraphFrame> frames;
   for (const AcceptedSubgraph& subgraph : accepted) frames.push_back(FrameOfSubgraph(subgraph.solution));
   const SubgraphLoopResult loops = FindLoopInconsistentLinks(links, frames, options.loops);
   out.triangles = loops.triangles;
+  out.cycles = loops.cycles;
   std::map<size_t, RejectedLink> rejected_pairs;
   for (const RejectedLink& rejected : loops.rejected) rejected_pairs[pair_of_link[rejected.link]] = rejected;
   std::map<size_t, size_t> link_of_pair;
@@ -135,6 +140,7 @@ void PruneViewGraph(const ViewGraphPruningOptions& options, ViewGraph* graph, co
       pair_report.inconsistent_triangles = loops.inconsistent_triangles[link->second];
     }
     pair_report.rejected_by_loops = rejected != rejected_pairs.end();
+    pair_report.rejected_by_cycle = pair_report.rejected_by_loops ? rejected->second.cycle : -1;
     for (const InterSubgraphEdgeDecision& decision : alignment.edges) {
       if (decision.kept) continue;
       const EdgeInvalidation why =

@@ -77,6 +77,11 @@ void AddPruningOptions(CLI::App* cmd, sfm_pruning::ViewGraphPruningOptions* opti
                     "they should see is ruled out")
       ->check(CLI::Range(0.0, 1.0))
       ->capture_default_str();
+  group->add_option("--prune_relative_coverage_break_even", alignment.relative_coverage_break_even,
+                    "match_coverage, when every candidate is below the break-even: rule out those whose "
+                    "coverage is below this fraction of the pair's best (0: the largest wins)")
+      ->check(CLI::Range(0.0, 1.0))
+      ->capture_default_str();
   group->add_option("--prune_max_rotation_deviation_deg", alignment.max_rotation_deviation_deg,
                     "E_r: rotation deviation of an edge from the RANSAC hypothesis")
       ->check(CLI::PositiveNumber)
@@ -106,6 +111,10 @@ void AddPruningOptions(CLI::App* cmd, sfm_pruning::ViewGraphPruningOptions* opti
   group->add_option("--prune_loop_max_scale_ratio", loops.max_scale_ratio,
                     "Subgraph triangle: largest scale change of the composed frame transforms")
       ->check(CLI::Range(1.0, 1e9))
+      ->capture_default_str();
+  group->add_option("--prune_loop_max_cycle_length", loops.max_cycle_length,
+                    "Longest cycle of subgraphs the second loop pass judges (below 4: off); on a broken "
+                    "cycle the pair of lowest match coverage is cut")
       ->capture_default_str();
 }
 

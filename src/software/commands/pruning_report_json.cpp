@@ -67,7 +67,8 @@ nlohmann::json PruningReportJson(const sfm_pruning::ViewGraphPruningReport& prun
                      {"beta", pair.beta},
                      {"consistent_triangles", pair.consistent_triangles},
                      {"inconsistent_triangles", pair.inconsistent_triangles},
-                     {"rejected_by_loops", pair.rejected_by_loops}});
+                     {"rejected_by_loops", pair.rejected_by_loops},
+                     {"rejected_by_cycle", pair.rejected_by_cycle}});
     if (pair.has_frame_transform) {
       pairs.back()["frame_rotation_deg"] =
           RadToDeg(RotationAngleBetween(pair.k2_to_k1.rotation, Eigen::Matrix3d::Identity()));
@@ -80,6 +81,15 @@ nlohmann::json PruningReportJson(const sfm_pruning::ViewGraphPruningReport& prun
                          {"scale_ratio", triangle.scale_ratio},
                          {"translation_fraction", triangle.translation_fraction},
                          {"consistent", triangle.consistent}});
+  }
+  nlohmann::json cycles = nlohmann::json::array();
+  for (const SubgraphCycle& cycle : pruning.cycles) {
+    cycles.push_back({{"subgraphs", cycle.subgraphs},
+                      {"rotation_deg", cycle.rotation_deg},
+                      {"scale_ratio", cycle.scale_ratio},
+                      {"translation_fraction", cycle.translation_fraction},
+                      {"loop_factor", cycle.loop_factor},
+                      {"consistent", cycle.consistent}});
   }
   nlohmann::json removed = nlohmann::json::array();
   for (const RemovedEdge& edge : pruning.removed_edges) {
@@ -102,6 +112,7 @@ nlohmann::json PruningReportJson(const sfm_pruning::ViewGraphPruningReport& prun
           {"tree", std::move(nodes)},
           {"subgraph_pairs", std::move(pairs)},
           {"subgraph_triangles", std::move(triangles)},
+          {"subgraph_cycles", std::move(cycles)},
           {"removed_edges", std::move(removed)}};
 }
 
