@@ -74,14 +74,18 @@ sfm_pruning::ViewGraph BuildVerifiedViewGraph(const EngineSettings& settings, co
 // intrinsics first (the caller verifies them again with the calibrated ones).
 sfm_pruning::FocalCalibrationReport CalibrateFocals(const EngineSettings& settings, const ReconstructionInput& input,
                                                     const std::set<sfm_pruning::IndexT>& refined,
-                                                    sfm_pruning::SfmData* scene) {
+                                                    sfm_pruning::SfmData* scene,
+                                                    std::optional<VerifiedViewGraph>* prior_graph) {
   const sfm_pruning::FocalCalibrationOptions options;
   if (!input.verified.empty()) {
     return CalibrateFocalLengths(options, refined, sfm_pruning::InliersOfPairs(input.verified), input.features, scene);
   }
-  sfm_pruning::ViewGraphBuildReport prior_build;
-  const sfm_pruning::ViewGraph prior_graph = BuildVerifiedViewGraph(settings, input, &prior_build, scene);
-  return CalibrateFocalLengths(options, refined, sfm_pruning::InliersOfEdges(prior_graph), input.features, scene);
+  VerifiedViewGraph prior;
+  prior.graph = BuildVerifiedViewGraph(settings, input, &prior.build, scene);
+  const sfm_pruning::FocalCalibrationReport report =
+      CalibrateFocalLengths(options, refined, sfm_pruning::InliersOfEdges(prior.graph), input.features, scene);
+  if (prior_graph != nullptr) *prior_graph = std::move(prior);
+  return report;
 }
 
 namespace {
@@ -102,8 +106,10 @@ struct Solution {
 // serves only its focal, which the full solve refines again; the pruning would double its cost).
 enum class Schedule { kFull, kFocalSearch };
 
+// `verified`: a graph already verified with the intrinsics of `scene` (none: verify here).
 Solution Solve(const EngineSettings& settings, const ReconstructionInput& input, const sfm_pruning::SfmData& scene,
-               const std::set<sfm_pruning::IndexT>& refined, Schedule schedule);
+               const std::set<sfm_pruning::IndexT>& refined, Schedule schedule,
+               const VerifiedViewGraph* verified = nullptr);
 
 nlohmann::json TimingsJson(const EngineSettings& settings, const sfm_pruning::ViewGraphBuildReport& build,
                            const sfm_pruning::GlobalEngineReport& engine, const sfm_pruning::SfmData& model,
@@ -228,10 +234,16 @@ void AddSolverOptions(CLI::App* cmd, EngineSettings* settings) {
 namespace {
 
 Solution Solve(const EngineSettings& settings, const ReconstructionInput& input, const sfm_pruning::SfmData& scene,
-               const std::set<sfm_pruning::IndexT>& refined, Schedule schedule) {
+               const std::set<sfm_pruning::IndexT>& refined, Schedule schedule, const VerifiedViewGraph* verified) {
   Solution solution;
   const auto verify_start = std::chrono::steady_clock::now();
-  const sfm_pruning::ViewGraph graph = BuildVerifiedViewGraph(settings, input, &solution.build, &scene);
+  std::optional<sfm_pruning::ViewGraph> verified_here;
+  if (verified == nullptr) {
+    verified_here = BuildVerifiedViewGraph(settings, input, &solution.build, &scene);
+  } else {
+    solution.build = verified->build;
+  }
+  const sfm_pruning::ViewGraph& graph = verified != nullptr ? verified->graph : *verified_here;
   solution.verify_seconds = SecondsSince(verify_start);
   Info("view graph: " + std::to_string(graph.NumValidEdges()) + " edges of " +
        std::to_string(solution.build.num_pairs) + " pairs, " + std::to_string(graph.NumNodes()) + " views");
@@ -261,13 +273,15 @@ Solution Solve(const EngineSettings& settings, const ReconstructionInput& input,
 // focal far from the guess, and the relative poses verified with the guess would have to be
 // estimated and solved again. A quick solve finds the focal first, written into `scene`, so that
 // the full solve runs with it. Returns the search's wall time (0 when no camera needed one).
+// `prior_graph`: the calibration's graph when it is still valid for `scene` (else verified here).
 double SearchUncalibratedFocals(const EngineSettings& settings, const ReconstructionInput& input,
                                 const sfm_pruning::FocalCalibrationReport& calibration,
-                                const std::set<sfm_pruning::IndexT>& refined, sfm_pruning::SfmData* scene) {
+                                const std::set<sfm_pruning::IndexT>& refined, sfm_pruning::SfmData* scene,
+                                const VerifiedViewGraph* prior_graph) {
   const std::set<sfm_pruning::IndexT> uncalibrated = UncalibratedFocals(calibration, *scene);
   if (uncalibrated.empty()) return 0.0;
   const auto start = std::chrono::steady_clock::now();
-  const Solution search = Solve(settings, input, *scene, refined, Schedule::kFocalSearch);
+  const Solution search = Solve(settings, input, *scene, refined, Schedule::kFocalSearch, prior_graph);
   if (search.report.success) {
     const std::string searched = MovedFocals(*scene, search.model, uncalibrated, 0.0);
     Info("focal search: " + (searched.empty() ? std::string("the guessed focal stays") : searched));
@@ -288,17 +302,24 @@ void RunReconstruction(const EngineSettings& settings, const ReconstructionInput
   const std::set<sfm_pruning::IndexT> refined = RefinedIntrinsics(settings.intrinsics, input);
   sfm_pruning::SfmData scene = input.scene;
   std::optional<sfm_pruning::FocalCalibrationReport> calibration;
+  std::optional<VerifiedViewGraph> prior_graph;
   const auto calibration_start = std::chrono::steady_clock::now();
   const std::set<sfm_pruning::IndexT> focals_to_calibrate = FocalsToCalibrate(settings.intrinsics, input);
   if (settings.intrinsics.focal && !focals_to_calibrate.empty()) {
-    calibration = CalibrateFocals(settings, input, focals_to_calibrate, &scene);
+    calibration = CalibrateFocals(settings, input, focals_to_calibrate, &scene, &prior_graph);
     ReportCalibration(*calibration);
+    // An accepted focal changes the intrinsics the prior graph was verified with.
+    for (const sfm_pruning::IntrinsicFocalCalibration& entry : calibration->intrinsics) {
+      if (entry.accepted) prior_graph.reset();
+    }
   }
   const double calibration_seconds = SecondsSince(calibration_start);
 
   const double focal_search_seconds =
-      calibration && settings.intrinsics.focal ? SearchUncalibratedFocals(settings, input, *calibration, refined, &scene)
-                                               : 0.0;
+      calibration && settings.intrinsics.focal
+          ? SearchUncalibratedFocals(settings, input, *calibration, refined, &scene,
+                                     prior_graph ? &*prior_graph : nullptr)
+          : 0.0;
 
   Solution solution = Solve(settings, input, scene, refined, Schedule::kFull);
   double first_pass_seconds = 0.0;

@@ -5,6 +5,7 @@
 
 #include <cstdint>
 #include <filesystem>
+#include <optional>
 #include <set>
 #include <string>
 #include <vector>
@@ -48,11 +49,19 @@ sfm_pruning::ViewGraph BuildVerifiedViewGraph(const EngineSettings& settings, co
                                               sfm_pruning::ViewGraphBuildReport* report,
                                               const sfm_pruning::SfmData* scene = nullptr);
 
+// A view graph and the report of the verification that built it.
+struct VerifiedViewGraph {
+  sfm_pruning::ViewGraph graph;
+  sfm_pruning::ViewGraphBuildReport build;
+};
+
 // View-graph focal calibration (fundamental matrices) of the cameras `refined` into *scene, from
-// the input's verified pairs, or from its matches verified once with the prior intrinsics.
+// the input's verified pairs, or from its matches verified once with the prior intrinsics; that
+// graph goes to *prior_graph when given (it stays valid if the calibration changes no focal).
 sfm_pruning::FocalCalibrationReport CalibrateFocals(const EngineSettings& settings, const ReconstructionInput& input,
                                                     const std::set<sfm_pruning::IndexT>& refined,
-                                                    sfm_pruning::SfmData* scene);
+                                                    sfm_pruning::SfmData* scene,
+                                                    std::optional<VerifiedViewGraph>* prior_graph = nullptr);
 
 // A stage that ran before the input was read (the image front end of `prunesfm run IMAGES OUT`),
 // listed first in timings.json; `reused` when a previous run's result was taken as is.
