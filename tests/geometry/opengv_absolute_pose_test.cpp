@@ -1,8 +1,11 @@
 #include "sfm_pruning/geometry/opengv_absolute_pose.hpp"
 
 #include <algorithm>
+#include <atomic>
 #include <cmath>
 #include <string>
+#include <thread>
+#include <vector>
 
 #include <gtest/gtest.h>
 
@@ -75,6 +78,37 @@ TEST(OpenGVAbsolutePose, SameSeedSameOutput) {
   EXPECT_EQ(a.pose.rotation, b.pose.rotation);
   EXPECT_EQ(a.pose.center, b.pose.center);
   EXPECT_EQ(a.inliers, b.inliers);
+}
+
+// OpenGV's EPnP keeps its QR work buffers in function-static storage (Epnp::qr_solve), so two
+// threads solving at once share them: results changed in the last digits and, on the first call,
+// one thread could write through a null buffer (a segfault of GLOBAL_PRUNED with 2 threads).
+// EstimateAbsolutePose serialises the EPnP solve; concurrent calls must equal sequential ones.
+TEST(OpenGVAbsolutePose, ConcurrentCallsGiveTheSequentialResults) {
+  std::vector<testing::SyntheticScene> scenes;
+  std::vector<AbsolutePoseResult> sequential;
+  AbsolutePoseOptions options;
+  for (uint32_t seed = 1; seed <= 6; ++seed) {
+    scenes.push_back(testing::MakeSyntheticScene(1, {150, 1.0, 0.3, true, seed}));
+    sequential.push_back(EstimateAbsolutePose(scenes.back().bearings[0], scenes.back().points, options));
+    ASSERT_TRUE(sequential.back().success);
+  }
+  std::atomic<int> mismatches{0};
+  std::vector<std::thread> workers;
+  for (int t = 0; t < 4; ++t) {
+    workers.emplace_back([&]() {
+      for (int round = 0; round < 15; ++round) {
+        for (size_t k = 0; k < scenes.size(); ++k) {
+          const AbsolutePoseResult result = EstimateAbsolutePose(scenes[k].bearings[0], scenes[k].points, options);
+          const bool same = result.success && result.pose.rotation == sequential[k].pose.rotation &&
+                            result.pose.center == sequential[k].pose.center && result.inliers == sequential[k].inliers;
+          if (!same) ++mismatches;
+        }
+      }
+    });
+  }
+  for (std::thread& worker : workers) worker.join();
+  EXPECT_EQ(mismatches.load(), 0);
 }
 
 TEST(OpenGVAbsolutePose, FailsWithAReasonOnTooFewCorrespondences) {

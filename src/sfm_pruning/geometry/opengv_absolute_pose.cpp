@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <memory>
+#include <mutex>
 #include <string>
 
 #include <opengv/absolute_pose/CentralAbsoluteAdapter.hpp>
@@ -15,6 +16,23 @@ namespace sfm_pruning {
 namespace {
 
 using SacProblem = opengv::sac_problems::absolute_pose::AbsolutePoseSacProblem;
+
+// OpenGV's EPnP (modules::Epnp::qr_solve, Debian's libopengv 1.0) keeps its QR work buffers in
+// function-static storage: concurrent solves share them, which changed results in the last digits
+// and, when two threads made the very first call together, wrote through a null buffer (segfault).
+// Every EPnP model fit of the process goes through one mutex; sampling, scoring and the nonlinear
+// refinement still run in parallel. Kneip's P3P has no such state.
+class SerializedEpnpProblem : public SacProblem {
+ public:
+  using SacProblem::SacProblem;
+
+  bool computeModelCoefficients(const std::vector<int>& indices, model_t& out_model) const override {
+    if (_algorithm != EPNP) return SacProblem::computeModelCoefficients(indices, out_model);
+    static std::mutex epnp_mutex;
+    const std::lock_guard<std::mutex> lock(epnp_mutex);
+    return SacProblem::computeModelCoefficients(indices, out_model);
+  }
+};
 
 // Correspondences whose point lies in front of the camera within the angular threshold.
 std::vector<int> SelectInliers(const Pose& pose, const std::vector<Eigen::Vector3d>& bearings,
@@ -49,7 +67,7 @@ AbsolutePoseResult EstimateAbsolutePose(const std::vector<Eigen::Vector3d>& bear
   const auto algorithm = options.solver == AbsolutePoseOptions::Solver::kP3pKneip ? SacProblem::KNEIP
                                                                                   : SacProblem::EPNP;
   // make_shared, never new: see docs/dependencies.md §0 (aligned operator delete in libopengv).
-  const auto problem = std::make_shared<SacProblem>(adapter, algorithm, /*randomSeed=*/false);
+  const auto problem = std::make_shared<SerializedEpnpProblem>(adapter, algorithm, /*randomSeed=*/false);
   // Checked here because OpenGV prints to stderr instead of failing when the sample is too big.
   const size_t needed = std::max<size_t>(problem->getSampleSize(), options.min_num_inliers);
   if (bearings.size() < needed) {
