@@ -42,6 +42,10 @@ CONFIGS = [
     ("paper's vote and sample", "GLOBAL_PRUNED",
      ["--prune_hypothesis_selection", "largest_consensus", "--prune_max_sample_size", "0"]),
     ("without the loop check across subgraph pairs", "GLOBAL_PRUNED", ["--prune_subgraph_loops", "false"]),
+    ("loop check on triangles only (no cycle pass)", "GLOBAL_PRUNED", ["--prune_loop_max_cycle_length", "3"]),
+    ("below the break-even the largest candidate wins", "GLOBAL_PRUNED",
+     ["--prune_relative_coverage_break_even", "0"]),
+    ("RANSAC sample cap 4 (before session 14)", "GLOBAL_PRUNED", ["--prune_max_sample_size", "4"]),
     ("with a refit of the RANSAC winner (3 rounds)", "GLOBAL_PRUNED", ["--prune_refine_rounds", "3"]),
 ]
 
