@@ -17,10 +17,10 @@ Similarity3 TransformInto(const SubgraphLink& link, int into) {
   return into == link.k1 ? link.k2_to_k1 : link.k2_to_k1.Inverse();
 }
 
-// Is link a more trusted than link b (coverage, then support, then the earlier link)?
+// MoreTrustedLink, and the earlier link on a tie.
 bool MoreTrusted(const std::vector<SubgraphLink>& links, size_t a, size_t b) {
-  if (links[a].coverage != links[b].coverage) return links[a].coverage > links[b].coverage;
-  if (links[a].support != links[b].support) return links[a].support > links[b].support;
+  if (MoreTrustedLink(links[a], links[b])) return true;
+  if (MoreTrustedLink(links[b], links[a])) return false;
   return a < b;
 }
 

@@ -1,11 +1,11 @@
 #include "sfm_pruning/pruning/subgraph_loop_consistency.hpp"
 
-#include "sfm_pruning/pruning/subgraph_cycle_consistency.hpp"
-
 #include <algorithm>
 #include <cmath>
 #include <map>
 #include <utility>
+
+#include "sfm_pruning/pruning/subgraph_cycle_consistency.hpp"
 
 namespace sfm_pruning {
 
@@ -34,16 +34,10 @@ SubgraphTriangle MeasureSubgraphTriangle(int a, int b, int c, const Similarity3&
   return triangle;
 }
 
-namespace {
-
-// Between two links with the same triangle margin, the one with the higher match coverage, then
-// the larger support, is less likely the wrong one (on a tie the later link is cut).
-bool LessSuspect(const SubgraphLink& a, const SubgraphLink& b) {
+bool MoreTrustedLink(const SubgraphLink& a, const SubgraphLink& b) {
   if (a.coverage != b.coverage) return a.coverage > b.coverage;
   return a.support > b.support;
 }
-
-}  // namespace
 
 SubgraphLoopResult FindLoopInconsistentLinks(const std::vector<SubgraphLink>& links,
                                              const std::vector<SubgraphFrame>& frames,
@@ -102,7 +96,7 @@ SubgraphLoopResult FindLoopInconsistentLinks(const std::vector<SubgraphLink>& li
       const auto b = static_cast<size_t>(best);
       const long margin = static_cast<long>(bad[l]) - static_cast<long>(good[l]);
       const long best_margin = static_cast<long>(bad[b]) - static_cast<long>(good[b]);
-      if (margin > best_margin || (margin == best_margin && !LessSuspect(links[l], links[b]))) {
+      if (margin > best_margin || (margin == best_margin && !MoreTrustedLink(links[l], links[b]))) {
         best = static_cast<int>(l);
       }
     }

@@ -66,6 +66,10 @@ struct SubgraphLink {
   double coverage = std::numeric_limits<double>::infinity();
 };
 
+// Is link a more trusted than link b: the higher match coverage, then the larger support? (Both
+// loop passes cut the less trusted of two links they cannot tell apart otherwise.)
+bool MoreTrustedLink(const SubgraphLink& a, const SubgraphLink& b);
+
 struct SubgraphTriangle {
   int a = -1, b = -1, c = -1;  // a < b < c, subgraph indices
   double rotation_deg = 0.0;
