@@ -23,8 +23,7 @@ struct StreetLinks {
   Similarity3 TwinOf4(int k1) const {
     Similarity3 shift;
     shift.translation = Eigen::Vector3d(12, 0, 0);
-    const Similarity3& frame = scene.frames[static_cast<size_t>(k1)];
-    return frame.Compose(shift).Compose(frame.Inverse());
+    return scene.WorldMotionIn(k1, shift);
   }
 
   // Coverages as measured on the street (the twins re-detect the least).

@@ -28,11 +28,18 @@ struct LoopScene {
   }
   explicit LoopScene(const std::vector<Eigen::Vector3d>& world_centres) { Build(world_centres); }
 
+  // A motion of the world (a shift along the street, a turn about the courtyard) written in k's
+  // frame, the form Link's `error` takes.
+  Similarity3 WorldMotionIn(int k, const Similarity3& world_motion) const {
+    const Similarity3& frame = frames[static_cast<size_t>(k)];
+    return frame.Compose(world_motion).Compose(frame.Inverse());
+  }
+
   // The exact link k1 -> k2 (k1 < k2), optionally followed by a wrong motion `error` in k1's frame.
   SubgraphLink Link(int k1, int k2, size_t support, const Similarity3& error = {},
-                    double coverage = std::numeric_limits<double>::infinity()) const {
+                    double trust = std::numeric_limits<double>::infinity()) const {
     const Similarity3 exact = frames[static_cast<size_t>(k1)].Compose(frames[static_cast<size_t>(k2)].Inverse());
-    return {k1, k2, error.Compose(exact), support, coverage};
+    return {k1, k2, error.Compose(exact), support, trust};
   }
 
  private:

@@ -73,6 +73,7 @@ SyntheticSceneOptions ResolveDefaults(SyntheticSceneOptions o) {
           "sequential_window and loop_min_gap must be positive, loop_candidates >= 0");
   Require(o.laps >= 1, "laps must be at least 1");
   Require(o.twin_fraction <= 0.9, "twin_fraction must be in [0, 0.9]");
+  Require(o.street_module_width_m >= 2.0, "street_module_width must be at least 2 m (the shop sign is 2 m wide)");
   Require(o.num_threads >= 1, "num_threads must be at least 1");
   return o;
 }

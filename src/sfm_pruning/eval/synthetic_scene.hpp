@@ -67,6 +67,10 @@ struct SyntheticSceneOptions {
   // fraction of facade segments that repeat another segment (duplicates).
   int laps = 0;                 // default 2
   double twin_fraction = -1.0;  // default 0.25; 0 is allowed (negative = default)
+  // street: width of the facade module that repeats. At the default 6 m a view (45° across, 7 m
+  // from the facades) sees one whole period, so every pair of views matches the facade and even
+  // neighbours carry twin matches along their epipolar lines (docs/synthetic_scenes.md).
+  double street_module_width_m = 6.0;
 
   // Worker threads for matching; the output does not depend on it.
   int num_threads = 1;

@@ -11,7 +11,6 @@ namespace sfm_pruning {
 namespace {
 
 constexpr double kFacadeDistanceM = 7.0;  // facades stand at y = 7 m, the camera walks along y = 0
-constexpr double kModuleWidthM = 6.0;
 constexpr double kFacadeHeightM = 9.0;
 constexpr double kFacadeDensityPerM2 = 12.0;
 constexpr double kFacadeReliefM = 0.05;
@@ -37,24 +36,25 @@ SceneLayout BuildStreetLayout(const SyntheticSceneOptions& options, std::mt19937
   SceneLayout layout;
   const double s = options.point_density_scale;
   const Eigen::Vector3d x = Eigen::Vector3d::UnitX(), y = Eigen::Vector3d::UnitY(), z = Eigen::Vector3d::UnitZ();
+  const double module_width = options.street_module_width_m;
   const double path_length = kStepM * std::max(0, options.num_views - 1);
   const double x_begin = -kMarginM;
-  const int num_modules = static_cast<int>(std::ceil((path_length + 2 * kMarginM) / kModuleWidthM));
+  const int num_modules = static_cast<int>(std::ceil((path_length + 2 * kMarginM) / module_width));
 
   // One facade texture, repeated; u along +x and v up give a normal towards the street (-y).
-  const Texture facade = MakeTexture(kModuleWidthM, kFacadeHeightM, kFacadeDensityPerM2 * s, kFacadeReliefM, &layout, rng);
+  const Texture facade = MakeTexture(module_width, kFacadeHeightM, kFacadeDensityPerM2 * s, kFacadeReliefM, &layout, rng);
   for (int k = 0; k < num_modules; ++k) {
-    const double x0 = x_begin + k * kModuleWidthM;
+    const double x0 = x_begin + k * module_width;
     PlaceTexture(facade, {x0, kFacadeDistanceM, 0.0}, x, z, &layout);
     if (k % 2 == 1) {  // a unique shop sign on every other facade
       const Texture sign = MakeTexture(kSignWidthM, kSignHeightM, kSignDensityPerM2 * s, 0.0, &layout, rng);
-      const double sx = x0 + 0.5 * (kModuleWidthM - kSignWidthM);
+      const double sx = x0 + 0.5 * (module_width - kSignWidthM);
       PlaceTexture(sign, {sx, kFacadeDistanceM - kSignStandOffM, kSignElevationM}, x, z, &layout);
     }
   }
   // The street surface, unique, between the facades and a little behind the camera path.
   const double street_width = kFacadeDistanceM + kStreetBehindCameraM;
-  const Texture street = MakeTexture(num_modules * kModuleWidthM, street_width, kGroundDensityPerM2 * s, kGroundReliefM, &layout, rng);
+  const Texture street = MakeTexture(num_modules * module_width, street_width, kGroundDensityPerM2 * s, kGroundReliefM, &layout, rng);
   PlaceTexture(street, {x_begin, -kStreetBehindCameraM, 0.0}, x, y, &layout);
 
   std::uniform_real_distribution<double> position_jitter(-kPositionJitterM, kPositionJitterM);

@@ -1,12 +1,14 @@
 #include "sfm_pruning/pruning/recursive_partition.hpp"
 
 #include <chrono>
+#include <map>
 #include <set>
 #include <string>
 #include <utility>
 #include <vector>
 
 #include "sfm_pruning/util/parallel_for.hpp"
+#include "sfm_pruning/view_graph/distinctive_weights.hpp"
 
 namespace sfm_pruning {
 namespace {
@@ -28,7 +30,13 @@ class Partitioner {
         graph_(graph),
         views_and_intrinsics_(views_and_intrinsics),
         features_(features),
-        progress_(progress) {}
+        progress_(progress) {
+    // Computed once on the whole graph: a feature's match count is a property of the collection,
+    // not of the community it ends up in.
+    if (options_.edge_weight == RecursivePartitionOptions::EdgeWeight::kDistinctiveMatches) {
+      louvain_weights_ = DistinctiveMatchWeights(graph_, FeatureDistinctiveness(graph_));
+    }
+  }
 
   RecursivePartitionResult Run() {
     SubgraphNode root;
@@ -70,7 +78,12 @@ class Partitioner {
   // False when Louvain returns fewer than two communities.
   bool Split(int index, std::vector<int>* wave) {
     const std::vector<IndexT>& views = result_.nodes[static_cast<size_t>(index)].view_ids;
-    const ViewGraph induced = graph_.InducedSubgraph(std::set<IndexT>(views.begin(), views.end()));
+    ViewGraph induced = graph_.InducedSubgraph(std::set<IndexT>(views.begin(), views.end()));
+    if (!louvain_weights_.empty()) {
+      for (const ViewPair& pair : induced.ValidEdgePairs()) {
+        induced.MutableEdge(pair.first, pair.second)->weight = louvain_weights_.at(pair);
+      }
+    }
     const LouvainResult louvain = DetectCommunitiesLouvain(induced, options_.louvain);
     if (louvain.communities.size() < 2) return false;
     std::vector<int> children;
@@ -171,6 +184,7 @@ class Partitioner {
   const SfmData& views_and_intrinsics_;
   const FeaturesPerView& features_;
   const ProgressCallback& progress_;
+  std::map<ViewPair, double> louvain_weights_;  // empty: Louvain uses the graph's own weights
   RecursivePartitionResult result_;
 };
 

@@ -38,6 +38,12 @@ namespace sfm_pruning {
 struct RecursivePartitionOptions {
   bool recursive = true;  // false: a single Louvain pass, every community accepted (ablation)
   LouvainOptions louvain;
+  // The edge similarity Louvain maximises modularity on. kInliers is the paper's |M_ij|;
+  // kDistinctiveMatches weighs each inlier by how few views its features match in
+  // (view_graph/distinctive_weights.hpp), so repeated structure that every view sees counts little.
+  // Only Louvain sees it: the per-community engine runs keep the inlier weights.
+  enum class EdgeWeight { kInliers, kDistinctiveMatches };
+  EdgeWeight edge_weight = EdgeWeight::kDistinctiveMatches;
   ConsistencyTestOptions consistency;  // each test can be switched off there
   GlobalEngineOptions engine;          // per-community reconstruction (engine.num_threads: 1, see above)
   int num_threads = 1;                 // communities solved at the same time

@@ -184,6 +184,27 @@ std::vector<bool> RelativelyRuledOut(const std::vector<AlignmentHypothesis>& hyp
   return out;
 }
 
+// kMostTrusted: the candidate of highest trust among those the coverage does not rule out and that
+// have at least two consensus edges (ties: the larger consensus, then the earlier); the largest
+// when none is eligible.
+size_t MostTrustedCandidate(const std::vector<AlignmentHypothesis>& hypotheses, const std::vector<bool>& ruled_out) {
+  size_t chosen = 0;
+  for (size_t c = 1; c < hypotheses.size(); ++c) {
+    const AlignmentHypothesis& a = hypotheses[c];
+    const AlignmentHypothesis& b = hypotheses[chosen];
+    const bool a_eligible = a.consensus_size >= 2 && !ruled_out[c];
+    const bool b_eligible = b.consensus_size >= 2 && !ruled_out[chosen];
+    if (a_eligible != b_eligible) {
+      if (a_eligible) chosen = c;
+      continue;
+    }
+    const bool better = a_eligible ? (a.trust > b.trust || (a.trust == b.trust && a.consensus_size > b.consensus_size))
+                                   : a.consensus_size > b.consensus_size;
+    if (better) chosen = c;
+  }
+  return chosen;
+}
+
 // Runs RANSAC over the voting edges and writes the verdicts of the voters into `result`.
 // kLargestConsensus keeps the first run's winner (the paper). kMatchCoverage runs RANSAC again on
 // the edges outside every consensus found so far (up to max_hypotheses candidates) and keeps the
@@ -197,7 +218,7 @@ void RunRansac(const std::vector<ChainedRelativePose>& chains, const std::vector
   std::iota(pool.begin(), pool.end(), size_t{0});
   std::vector<Candidate> candidates;
   const size_t max_candidates =
-      options.hypothesis_selection == Options::HypothesisSelection::kMatchCoverage ? options.max_hypotheses : 1;
+      options.hypothesis_selection == Options::HypothesisSelection::kLargestConsensus ? 1 : options.max_hypotheses;
   while (candidates.size() < std::max<size_t>(max_candidates, 1)) {
     std::optional<Candidate> candidate = RansacOverPool(chains, pool, options, &rng, result);
     if (!candidate) break;
@@ -224,20 +245,41 @@ void RunRansac(const std::vector<ChainedRelativePose>& chains, const std::vector
     summary.consensus_size = candidates[c].consensus.count;
     summary.beta = candidates[c].hypothesis.beta;
     ScoreCoverage(candidates[c].consensus, coverage, options, &summary);
+    if (options.candidate_trust) {
+      std::vector<ViewPair> edges;
+      for (size_t k = 0; k < n; ++k) {
+        if (!candidates[c].consensus.inlier[k]) continue;
+        const EdgePlacement& placement = result->edges[voter_edge_index[k]].placement;
+        edges.push_back({placement.view_i, placement.view_j});
+      }
+      summary.trust = options.candidate_trust(edges);
+    }
     result->hypotheses.push_back(summary);
   }
   // Candidates whose edges miss more landmarks than the break-even are ruled out; the largest
   // consensus among the others wins (the paper's rule). If all are ruled out (real images), the
   // candidates are compared with each other instead (RelativelyRuledOut).
+  const bool consensus_found = std::any_of(candidates.begin(), candidates.end(),
+                                          [](const Candidate& c) { return c.consensus.count > 0; });
   std::vector<bool> ruled_out(candidates.size());
   for (size_t c = 0; c < candidates.size(); ++c) ruled_out[c] = result->hypotheses[c].coverage_score < 0.0;
   if (std::all_of(ruled_out.begin(), ruled_out.end(), [](bool out) { return out; })) {
     ruled_out = RelativelyRuledOut(result->hypotheses, options);
   }
-  for (size_t c = 1; c < candidates.size(); ++c) {
-    const bool larger = result->hypotheses[c].consensus_size > result->hypotheses[chosen].consensus_size;
-    const bool better = ruled_out[chosen] ? (!ruled_out[c] || larger) : (!ruled_out[c] && larger);
-    if (better) chosen = c;
+  // A candidate no edge agrees with (its own sample failed the thresholds) expects nothing, so its
+  // coverage cannot rule it out; it must not win over one that some edges support (real street,
+  // seed 9: an empty candidate beat one of 3 edges and the pair lost its transform).
+  for (size_t c = 0; c < candidates.size(); ++c) {
+    if (result->hypotheses[c].consensus_size == 0 && consensus_found) ruled_out[c] = true;
+  }
+  if (options.hypothesis_selection == Options::HypothesisSelection::kMostTrusted) {
+    chosen = MostTrustedCandidate(result->hypotheses, ruled_out);
+  } else {
+    for (size_t c = 1; c < candidates.size(); ++c) {
+      const bool larger = result->hypotheses[c].consensus_size > result->hypotheses[chosen].consensus_size;
+      const bool better = ruled_out[chosen] ? (!ruled_out[c] || larger) : (!ruled_out[c] && larger);
+      if (better) chosen = c;
+    }
   }
   result->selected_hypothesis = static_cast<int>(chosen);
   const std::optional<Hypothesis> best = candidates[chosen].hypothesis;
@@ -284,6 +326,7 @@ const char* InterSubgraphVerdictName(InterSubgraphVerdict verdict) {
     case InterSubgraphVerdict::kFewEdges: return "few_edges";
     case InterSubgraphVerdict::kUnjudged: return "unjudged";
     case InterSubgraphVerdict::kLoopInconsistent: return "loop_inconsistent";
+    case InterSubgraphVerdict::kUnverified: return "unverified";
   }
   return "unknown";
 }

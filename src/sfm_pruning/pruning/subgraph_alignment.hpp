@@ -18,6 +18,7 @@
 
 #include <cstddef>
 #include <cstdint>
+#include <functional>
 #include <limits>
 #include <vector>
 
@@ -66,7 +67,10 @@ struct SubgraphAlignmentOptions {
   // two arcs) the twin edges are the larger consistent set, but each of them matches only the copy
   // and misses the unique texture its placed view should see (measured coverage ≤ 0.58 against
   // 0.6–0.9 for true edges; docs/pruning.md).
-  enum class HypothesisSelection { kLargestConsensus, kMatchCoverage };
+  // kMostTrusted: the same candidates, and the same ruling-out by coverage, as kMatchCoverage; among
+  // the others of at least two edges the one whose consensus edges `candidate_trust` ranks highest
+  // wins instead of the largest (ties: the larger).
+  enum class HypothesisSelection { kLargestConsensus, kMatchCoverage, kMostTrusted };
   HypothesisSelection hypothesis_selection = HypothesisSelection::kMatchCoverage;
   size_t max_hypotheses = 3;
   double coverage_break_even = 0.5;
@@ -77,6 +81,9 @@ struct SubgraphAlignmentOptions {
   // {0005–0008}×{0000–0004} had 7 edges at coverage 0.13, the true one 6 edges at 0.31, and the
   // largest-of-all rule folded the street.
   double relative_coverage_break_even = 0.5;
+  // kMostTrusted: the trust of a candidate's consensus edges (oriented (i, j)); set by the caller
+  // (view_graph_pruning.cpp: the pair trust, pair_trust.hpp).
+  std::function<double(const std::vector<ViewPair>& edges)> candidate_trust;
 
   // Pairs with fewer voting edges than this are not tested by RANSAC (the paper is silent).
   // With 1–2 votes there is no majority to tell the wrong edge from the right one.
@@ -107,6 +114,8 @@ enum class InterSubgraphVerdict {
   kUnjudged,              // kept: no valid RANSAC hypothesis
   kLoopInconsistent,      // removed with its whole pair: the pair's frame transform breaks the
                           // loops of subgraphs (subgraph_loop_consistency.hpp)
+  kUnverified,            // removed with its whole pair: redundant, and nothing verifies it
+                          // against the trusted forest (trusted_link_forest.hpp)
 };
 
 const char* InterSubgraphVerdictName(InterSubgraphVerdict verdict);
@@ -130,6 +139,7 @@ struct AlignmentHypothesis {
   size_t expected_landmarks = 0;  // Σ over the consensus edges (EdgePlacement coverage)
   size_t matched_landmarks = 0;
   double coverage_score = 0.0;  // matched − coverage_break_even · expected
+  double trust = 0.0;           // candidate_trust of the consensus edges (kMostTrusted)
 
   // matched / expected; infinity when nothing was expected (no evidence against the candidate).
   double Coverage() const {

@@ -33,7 +33,7 @@ std::vector<int> CanonicalCycle(std::vector<int> cycle) {
 }
 
 struct Forest {
-  std::vector<std::vector<std::pair<int, size_t>>> adjacent;  // per subgraph: (neighbour, link)
+  ForestAdjacency adjacent;
   std::vector<size_t> outside;  // eligible links not in the forest, most trusted first
 };
 
@@ -57,17 +57,17 @@ Forest MaximumSpanningForest(const std::vector<SubgraphLink>& links, const std::
   return forest;
 }
 
-// The forest path from `from` to `to` (both ends included; empty if they are not connected) and
-// the links along it.
-std::pair<std::vector<int>, std::vector<size_t>> ForestPath(const Forest& forest, int from, int to) {
-  std::vector<int> previous(forest.adjacent.size(), -1);
-  std::vector<size_t> via(forest.adjacent.size(), 0);
+}  // namespace
+
+std::pair<std::vector<int>, std::vector<size_t>> ForestPath(const ForestAdjacency& forest, int from, int to) {
+  std::vector<int> previous(forest.size(), -1);
+  std::vector<size_t> via(forest.size(), 0);
   std::deque<int> queue{from};
   previous[static_cast<size_t>(from)] = from;
   while (!queue.empty() && previous[static_cast<size_t>(to)] < 0) {
     const int node = queue.front();
     queue.pop_front();
-    for (const auto& [next, link] : forest.adjacent[static_cast<size_t>(node)]) {
+    for (const auto& [next, link] : forest[static_cast<size_t>(node)]) {
       if (previous[static_cast<size_t>(next)] >= 0) continue;
       previous[static_cast<size_t>(next)] = node;
       via[static_cast<size_t>(next)] = link;
@@ -86,8 +86,6 @@ std::pair<std::vector<int>, std::vector<size_t>> ForestPath(const Forest& forest
   std::reverse(path_links.begin(), path_links.end());
   return {nodes, path_links};
 }
-
-}  // namespace
 
 SubgraphCycle MeasureSubgraphCycle(const std::vector<int>& subgraphs, const std::vector<Similarity3>& to_previous,
                                    const std::vector<SubgraphFrame>& frames, const SubgraphLoopOptions& options) {
@@ -134,7 +132,7 @@ void RejectCycleInconsistentLinks(const std::vector<SubgraphLink>& links, const 
     }
     const Forest forest = MaximumSpanningForest(links, eligible, frames.size());
     for (size_t outside : forest.outside) {
-      auto [nodes, cycle_links] = ForestPath(forest, links[outside].k1, links[outside].k2);
+      auto [nodes, cycle_links] = ForestPath(forest.adjacent, links[outside].k1, links[outside].k2);
       const size_t length = nodes.size();
       if (length < 4 || length > options.max_cycle_length) continue;
       bool has_chord = false;

@@ -26,11 +26,19 @@
 #pragma once
 
 #include <cstddef>
+#include <utility>
 #include <vector>
 
 #include "sfm_pruning/pruning/subgraph_loop_consistency.hpp"
 
 namespace sfm_pruning {
+
+// A forest of subgraphs: per subgraph, (neighbour, index of the link or pair joining them).
+using ForestAdjacency = std::vector<std::vector<std::pair<int, size_t>>>;
+
+// The forest path from `from` to `to` (both ends included; empty if they are not connected) and
+// the links along it.
+std::pair<std::vector<int>, std::vector<size_t>> ForestPath(const ForestAdjacency& forest, int from, int to);
 
 // The loop of a cycle c0 -> c1 -> ... -> c(l-1) -> c0 of subgraphs; `to_previous[k]` is the
 // transform from c(k+1)'s frame into c(k)'s (the last one from c0's into c(l-1)'s).

@@ -35,7 +35,7 @@ SubgraphTriangle MeasureSubgraphTriangle(int a, int b, int c, const Similarity3&
 }
 
 bool MoreTrustedLink(const SubgraphLink& a, const SubgraphLink& b) {
-  if (a.coverage != b.coverage) return a.coverage > b.coverage;
+  if (a.trust != b.trust) return a.trust > b.trust;
   return a.support > b.support;
 }
 

@@ -36,6 +36,12 @@ namespace sfm_pruning {
 
 struct SubgraphLoopOptions {
   bool enabled = true;
+  // kTriangleVote: the triangle vote, then the longer cycles (FindLoopInconsistentLinks, above).
+  // kTrustedForest: every pair is judged against the most trusted spanning forest of the pairs
+  // (trusted_link_forest.hpp); the vote needs the true transforms to be the majority of the
+  // triangles, the forest only needs the trust to rank them first.
+  enum class Method { kTriangleVote, kTrustedForest };
+  Method method = Method::kTrustedForest;
   // Measured on books (real images): the closing triangle turns by 1.6–3.1° and moves a's centre
   // by 0.08–0.15 of its side, the triangles through the doppelganger pair by 53–55° and 1.4–1.5.
   // The scale of a pair is the least certain part of its transform (it comes from the spread of
@@ -56,18 +62,19 @@ struct SubgraphFrame {
 };
 
 // One aligned subgraph pair: k1 < k2, X_k1 = k2_to_k1(X_k2); support = consensus edges;
-// coverage = AlignmentHypothesis::Coverage() of the selected hypothesis (matched / expected
-// landmarks; infinity when nothing was expected, which is no evidence against the pair).
+// trust = how much the pair's selected edges look like true ones (ViewGraphPruningOptions::
+// link_trust: the match coverage of the selected hypothesis, infinity when nothing was expected,
+// which is no evidence against the pair; or the distinctive share of its inliers).
 struct SubgraphLink {
   int k1 = -1;
   int k2 = -1;
   Similarity3 k2_to_k1;
   size_t support = 0;
-  double coverage = std::numeric_limits<double>::infinity();
+  double trust = std::numeric_limits<double>::infinity();
 };
 
-// Is link a more trusted than link b: the higher match coverage, then the larger support? (Both
-// loop passes cut the less trusted of two links they cannot tell apart otherwise.)
+// Is link a more trusted than link b: the higher trust, then the larger support? (The loop
+// passes cut the less trusted of two links they cannot tell apart otherwise.)
 bool MoreTrustedLink(const SubgraphLink& a, const SubgraphLink& b);
 
 struct SubgraphTriangle {

@@ -56,6 +56,107 @@ SubgraphFrame FrameOfSubgraph(const SubgraphSolution& solution) {
   return frame;
 }
 
+
+// What the loop check decided for one pair of subgraphs.
+struct PairVerdict {
+  bool cut = false;                // every connecting edge is removed
+  bool keep_all = false;           // a forest pair without a transform keeps every connecting edge
+  InterSubgraphVerdict reason = InterSubgraphVerdict::kLoopInconsistent;  // when cut
+  EdgeInvalidation invalidation;   // when cut
+};
+
+// The selected hypothesis of an aligned pair, nullptr otherwise.
+const AlignmentHypothesis* SelectedHypothesis(const SubgraphAlignmentResult& alignment) {
+  if (alignment.selected_hypothesis < 0) return nullptr;
+  return &alignment.hypotheses[static_cast<size_t>(alignment.selected_hypothesis)];
+}
+
+// Whether the pair's transform can take part in a loop: a transform no connecting edge agrees with
+// is no evidence (real street: two such pairs, fitted on samples of doppelgangers, closed a
+// triangle with each other).
+bool HasUsableTransform(const SubgraphAlignmentResult& alignment) {
+  return alignment.has_frame_transform && alignment.consensus_size > 0;
+}
+
+// Method::kTriangleVote: the triangle vote, then the longer cycles, over the pairs with a usable
+// transform. Fills the report's triangles, cycles and triangle counts.
+std::vector<PairVerdict> VoteOnTriangles(const std::vector<std::pair<int, int>>& pairs,
+                                         const std::vector<SubgraphAlignmentResult>& alignments,
+                                         const std::vector<double>& trust, const std::vector<SubgraphFrame>& frames,
+                                         const SubgraphLoopOptions& options, ViewGraphPruningReport* out) {
+  std::vector<SubgraphLink> links;
+  std::vector<size_t> pair_of_link;
+  for (size_t p = 0; p < pairs.size(); ++p) {
+    if (!HasUsableTransform(alignments[p])) continue;
+    links.push_back({pairs[p].first, pairs[p].second, alignments[p].k2_to_k1, alignments[p].consensus_size, trust[p]});
+    pair_of_link.push_back(p);
+  }
+  const SubgraphLoopResult loops = FindLoopInconsistentLinks(links, frames, options);
+  out->triangles = loops.triangles;
+  out->cycles = loops.cycles;
+  std::vector<PairVerdict> verdicts(pairs.size());
+  for (size_t l = 0; l < links.size(); ++l) {
+    out->pairs[pair_of_link[l]].consistent_triangles = loops.consistent_triangles[l];
+    out->pairs[pair_of_link[l]].inconsistent_triangles = loops.inconsistent_triangles[l];
+  }
+  for (const RejectedLink& rejected : loops.rejected) {
+    const size_t p = pair_of_link[rejected.link];
+    verdicts[p].cut = true;
+    verdicts[p].invalidation = {EdgeInvalidReason::kSubgraphLoopInconsistent,
+                                static_cast<double>(rejected.inconsistent_triangles),
+                                static_cast<double>(rejected.consistent_triangles)};
+    out->pairs[p].rejected_by_loops = true;
+    out->pairs[p].rejected_by_cycle = rejected.cycle;
+  }
+  return verdicts;
+}
+
+// Method::kTrustedForest over every connected pair (trusted_link_forest.hpp).
+std::vector<PairVerdict> JudgeAgainstTrustedForest(const std::vector<std::pair<int, int>>& pairs,
+                                                   const std::vector<SubgraphAlignmentResult>& alignments,
+                                                   const std::vector<double>& trust,
+                                                   const std::vector<SubgraphFrame>& frames,
+                                                   const SubgraphLoopOptions& options, ViewGraphPruningReport* out) {
+  std::vector<SubgraphPairLink> links(pairs.size());
+  for (size_t p = 0; p < pairs.size(); ++p) {
+    const SubgraphAlignmentResult& alignment = alignments[p];
+    const bool has_transform = HasUsableTransform(alignment);
+    links[p] = {pairs[p].first, pairs[p].second, has_transform, alignment.k2_to_k1, trust[p],
+                has_transform ? alignment.consensus_size : alignment.edges.size()};
+  }
+  const TrustedForestResult forest = SelectLinksByTrustedForest(links, frames, options);
+  out->cycles = forest.cycles;
+  std::vector<PairVerdict> verdicts(pairs.size());
+  for (size_t p = 0; p < pairs.size(); ++p) {
+    SubgraphPairReport& report = out->pairs[p];
+    report.judged_by_forest = true;
+    report.forest_decision = forest.decisions[p];
+    switch (forest.decisions[p]) {
+      case LinkDecision::kForest:
+        // Nothing says which edges of a pair without a transform are wrong, and the pair is needed.
+        verdicts[p].keep_all = !links[p].has_transform;
+        break;
+      case LinkDecision::kClosesCycle:
+        break;
+      case LinkDecision::kBreaksCycle: {
+        const SubgraphCycle& cycle = forest.cycles[static_cast<size_t>(forest.cycle_of[p])];
+        verdicts[p].cut = true;
+        verdicts[p].invalidation = {EdgeInvalidReason::kSubgraphLoopInconsistent, cycle.rotation_deg,
+                                    options.max_rotation_deg * static_cast<double>(cycle.loop_factor)};
+        report.rejected_by_loops = true;
+        report.rejected_by_cycle = forest.cycle_of[p];
+        break;
+      }
+      case LinkDecision::kRedundantUnverified:
+        verdicts[p].cut = true;
+        verdicts[p].reason = InterSubgraphVerdict::kUnverified;
+        verdicts[p].invalidation = {EdgeInvalidReason::kUnverifiedSubgraphPair, trust[p], 0.0};
+        break;
+    }
+  }
+  return verdicts;
+}
+
 }  // namespace
 
 void PruneViewGraph(const ViewGraphPruningOptions& options, ViewGraph* graph, const SfmData& views_and_intrinsics,
@@ -77,6 +178,8 @@ void PruneViewGraph(const ViewGraphPruningOptions& options, ViewGraph* graph, co
   // 2. Alignment of every connected pair of subgraphs (decisions only, the graph is unchanged).
   start = std::chrono::steady_clock::now();
   const std::vector<AcceptedSubgraph>& accepted = out.partition.accepted;
+  const PairTrust pair_trust(options.link_trust, component_graph, accepted);
+  out.reference_distinctive_share = pair_trust.ReferenceShare();
   const std::vector<std::pair<int, int>> pairs = ConnectedSubgraphPairs(*graph, accepted);
   std::vector<SubgraphAlignmentResult> alignments(pairs.size());
   ParallelFor(
@@ -85,45 +188,51 @@ void PruneViewGraph(const ViewGraphPruningOptions& options, ViewGraph* graph, co
         const SubgraphSolution& s1 = accepted[static_cast<size_t>(pairs[p].first)].solution;
         const SubgraphSolution& s2 = accepted[static_cast<size_t>(pairs[p].second)].solution;
         const size_t num_edges = ConnectingEdges(*graph, s1.view_ids, s2.view_ids).size();
-        alignments[p] = AlignSubgraphPair(*graph, s1, s2, views_and_intrinsics, features,
-                                          PairAlignmentOptions(options, num_edges));
+        SubgraphAlignmentOptions alignment = PairAlignmentOptions(options, num_edges);
+        if (alignment.hypothesis_selection == SubgraphAlignmentOptions::HypothesisSelection::kMostTrusted) {
+          alignment.candidate_trust = [&](const std::vector<ViewPair>& edges) { return pair_trust.Of(edges, nullptr); };
+        }
+        alignments[p] = AlignSubgraphPair(*graph, s1, s2, views_and_intrinsics, features, alignment);
       },
       progress, "inter-subgraph pruning");
 
-  // 3. Loops of aligned pairs: a pair whose frame transform breaks them is cut whole.
-  std::vector<SubgraphLink> links;
-  std::vector<size_t> pair_of_link;
+  // 3. The loop check: a pair whose frame transform breaks the loops of subgraphs is cut whole.
+  std::vector<double> trust(pairs.size());
   for (size_t p = 0; p < pairs.size(); ++p) {
-    const SubgraphAlignmentResult& alignment = alignments[p];
-    // A transform no connecting edge agrees with is no evidence about the loops (real street: two
-    // such pairs, fitted on samples of doppelgangers, closed a triangle with each other).
-    if (!alignment.has_frame_transform || alignment.consensus_size == 0) continue;
-    const AlignmentHypothesis& selected = alignment.hypotheses[static_cast<size_t>(alignment.selected_hypothesis)];
-    links.push_back({pairs[p].first, pairs[p].second, alignment.k2_to_k1, alignment.consensus_size, selected.Coverage()});
-    pair_of_link.push_back(p);
+    // A pair without a usable transform keeps all its edges if kept at all: they are its evidence.
+    std::vector<ViewPair> edges;
+    for (const InterSubgraphEdgeDecision& decision : alignments[p].edges) {
+      if (decision.kept || !HasUsableTransform(alignments[p])) {
+        edges.push_back({decision.placement.view_i, decision.placement.view_j});
+      }
+    }
+    trust[p] = pair_trust.Of(edges, SelectedHypothesis(alignments[p]));
   }
   std::vector<SubgraphFrame> frames;
   for (const AcceptedSubgraph& subgraph : accepted) frames.push_back(FrameOfSubgraph(subgraph.solution));
-  const SubgraphLoopResult loops = FindLoopInconsistentLinks(links, frames, options.loops);
-  out.triangles = loops.triangles;
-  out.cycles = loops.cycles;
-  std::map<size_t, RejectedLink> rejected_pairs;
-  for (const RejectedLink& rejected : loops.rejected) rejected_pairs[pair_of_link[rejected.link]] = rejected;
-  std::map<size_t, size_t> link_of_pair;
-  for (size_t l = 0; l < pair_of_link.size(); ++l) link_of_pair[pair_of_link[l]] = l;
+  out.pairs.resize(pairs.size());
+  std::vector<PairVerdict> verdicts(pairs.size());
+  if (options.loops.enabled && options.loops.method == SubgraphLoopOptions::Method::kTrustedForest) {
+    verdicts = JudgeAgainstTrustedForest(pairs, alignments, trust, frames, options.loops, &out);
+  } else {
+    verdicts = VoteOnTriangles(pairs, alignments, trust, frames, options.loops, &out);
+  }
 
   // 4. The decisions applied to the graph.
   for (size_t p = 0; p < pairs.size(); ++p) {
     const auto [k1, k2] = pairs[p];
     SubgraphAlignmentResult& alignment = alignments[p];
-    const auto rejected = rejected_pairs.find(p);
-    if (rejected != rejected_pairs.end()) {
-      for (InterSubgraphEdgeDecision& decision : alignment.edges) {
+    const PairVerdict& verdict = verdicts[p];
+    for (InterSubgraphEdgeDecision& decision : alignment.edges) {
+      if (verdict.keep_all) decision.kept = true;
+      if (verdict.cut) {
+        if (decision.kept || verdict.reason == InterSubgraphVerdict::kLoopInconsistent) {
+          decision.verdict = verdict.reason;
+        }
         decision.kept = false;
-        decision.verdict = InterSubgraphVerdict::kLoopInconsistent;
       }
     }
-    SubgraphPairReport pair_report;
+    SubgraphPairReport& pair_report = out.pairs[p];
     pair_report.k1 = k1;
     pair_report.k2 = k2;
     pair_report.status = alignment.status;
@@ -134,21 +243,12 @@ void PruneViewGraph(const ViewGraphPruningOptions& options, ViewGraph* graph, co
     pair_report.selected_hypothesis = alignment.selected_hypothesis;
     pair_report.has_frame_transform = alignment.has_frame_transform;
     pair_report.k2_to_k1 = alignment.k2_to_k1;
-    const auto link = link_of_pair.find(p);
-    if (link != link_of_pair.end()) {
-      pair_report.consistent_triangles = loops.consistent_triangles[link->second];
-      pair_report.inconsistent_triangles = loops.inconsistent_triangles[link->second];
-    }
-    pair_report.rejected_by_loops = rejected != rejected_pairs.end();
-    pair_report.rejected_by_cycle = pair_report.rejected_by_loops ? rejected->second.cycle : -1;
+    pair_report.trust = trust[p];
     for (const InterSubgraphEdgeDecision& decision : alignment.edges) {
       if (decision.kept) continue;
       const EdgeInvalidation why =
-          pair_report.rejected_by_loops
-              ? EdgeInvalidation{EdgeInvalidReason::kSubgraphLoopInconsistent,
-                                 static_cast<double>(rejected->second.inconsistent_triangles),
-                                 static_cast<double>(rejected->second.consistent_triangles)}
-              : InterSubgraphInvalidation(decision, options.alignment);
+          verdict.cut && decision.verdict == verdict.reason ? verdict.invalidation
+                                                            : InterSubgraphInvalidation(decision, options.alignment);
       if (!graph->InvalidateEdge(decision.placement.view_i, decision.placement.view_j, why)) continue;
       RemovedEdge removed;
       removed.pair = decision.placement.view_i < decision.placement.view_j
@@ -161,7 +261,6 @@ void PruneViewGraph(const ViewGraphPruningOptions& options, ViewGraph* graph, co
       out.removed_edges.push_back(removed);
       ++pair_report.num_removed_edges;
     }
-    out.pairs.push_back(pair_report);
   }
   out.timings.push_back({"inter-subgraph pruning", SecondsSince(start)});
   out.num_output_edges = graph->NumValidEdges();

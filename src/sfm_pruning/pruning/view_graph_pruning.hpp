@@ -25,9 +25,11 @@
 #include <vector>
 
 #include "sfm_pruning/global/global_engine.hpp"
+#include "sfm_pruning/pruning/pair_trust.hpp"
 #include "sfm_pruning/pruning/recursive_partition.hpp"
 #include "sfm_pruning/pruning/subgraph_alignment.hpp"
 #include "sfm_pruning/pruning/subgraph_loop_consistency.hpp"
+#include "sfm_pruning/pruning/trusted_link_forest.hpp"
 
 namespace sfm_pruning {
 
@@ -45,6 +47,13 @@ struct ViewGraphPruningOptions {
   // against 3 of 10 with 4; orbit_symmetric, books and the clean scenes unchanged).
   size_t max_sample_size = 2;
   SubgraphLoopOptions loops;
+  // What ranks the pairs in the loop check (pair_trust.hpp). kDistinctiveShare: a twin edge
+  // matches only the repeated structure, whose features the views of every copy match; a true edge
+  // also matches the unique texture. Measured over all connecting edges of a pair, against the
+  // edges inside the subgraphs: books (photos) twin pair 0.63, true 0.69–0.90; street (photos)
+  // twins 0.52–0.61, true and mixed 0.81–0.91; synthetic courtyard twins ≤ 0.55, true ≥ 0.66
+  // (docs/pruning.md).
+  PairTrustMeasure link_trust = PairTrustMeasure::kDistinctiveShare;
   int num_threads = 1;  // subgraph pairs aligned in parallel (the result does not depend on it)
 };
 
@@ -66,6 +75,11 @@ struct SubgraphPairReport {
   size_t inconsistent_triangles = 0;
   bool rejected_by_loops = false;
   int rejected_by_cycle = -1;  // rejected by the longer-cycle pass: index into report cycles
+  // The pair's trust (link_trust over the edges its RANSAC kept, or all its edges when it has no
+  // transform) and, under Method::kTrustedForest, what the forest decided.
+  double trust = 0.0;
+  bool judged_by_forest = false;
+  LinkDecision forest_decision = LinkDecision::kForest;
 };
 
 struct RemovedEdge {
@@ -82,6 +96,8 @@ struct ViewGraphPruningReport {
   std::vector<RemovedEdge> removed_edges;  // pair order, then (i, j) order
   std::vector<SubgraphTriangle> triangles;  // loops of aligned pairs (subgraph_loop_consistency.hpp)
   std::vector<SubgraphCycle> cycles;        // longer cycles judged (subgraph_cycle_consistency.hpp)
+  // PairTrust::ReferenceShare (kDistinctiveShare only): the unit of the pairs' trust.
+  double reference_distinctive_share = 0.0;
   size_t num_input_edges = 0;   // valid edges before pruning
   size_t num_output_edges = 0;  // valid edges after pruning
   std::vector<StageTiming> timings;  // "subgraph partition", "inter-subgraph pruning"

@@ -16,6 +16,8 @@ std::string EdgeInvalidReasonName(EdgeInvalidReason reason) {
       return "inter_subgraph_inconsistent";
     case EdgeInvalidReason::kSubgraphLoopInconsistent:
       return "subgraph_loop_inconsistent";
+    case EdgeInvalidReason::kUnverifiedSubgraphPair:
+      return "unverified_subgraph_pair";
     case EdgeInvalidReason::kOther:
       return "other";
   }

@@ -24,6 +24,16 @@ void AddPruningOptions(CLI::App* cmd, sfm_pruning::ViewGraphPruningOptions* opti
                     "Modularity resolution gamma of Louvain (1 = classic modularity)")
       ->check(CLI::PositiveNumber)
       ->capture_default_str();
+  using EdgeWeight = sfm_pruning::RecursivePartitionOptions::EdgeWeight;
+  group->add_option("--prune_partition_weight", partition.edge_weight,
+                    "Edge similarity of the Louvain partition. inliers: the paper's inlier count; distinctive: "
+                    "each inlier weighs 1/(views its features match in), so repeated structure seen by every "
+                    "view counts little (docs/pruning.md)")
+      ->transform(CLI::CheckedTransformer(
+          std::map<std::string, EdgeWeight>{{"inliers", EdgeWeight::kInliers},
+                                            {"distinctive", EdgeWeight::kDistinctiveMatches}},
+          CLI::ignore_case))
+      ->default_str("distinctive");
 
   // Consistency tests of a community's solution.
   group->add_option("--prune_loop_test", consistency.test_loops, "Loop rotation consistency test on/off")
@@ -65,11 +75,13 @@ void AddPruningOptions(CLI::App* cmd, sfm_pruning::ViewGraphPruningOptions* opti
       ->capture_default_str();
   group->add_option("--prune_hypothesis_selection", alignment.hypothesis_selection,
                     "largest_consensus: the paper's vote; match_coverage: rule out RANSAC candidates whose "
-                    "edges miss the landmarks their placed views should see (docs/pruning.md)")
+                    "edges miss the landmarks their placed views should see; most_trusted: the candidate "
+                    "whose edges --prune_link_trust ranks highest (docs/pruning.md)")
       ->transform(CLI::CheckedTransformer(
           std::map<std::string, sfm_pruning::SubgraphAlignmentOptions::HypothesisSelection>{
               {"largest_consensus", sfm_pruning::SubgraphAlignmentOptions::HypothesisSelection::kLargestConsensus},
-              {"match_coverage", sfm_pruning::SubgraphAlignmentOptions::HypothesisSelection::kMatchCoverage}},
+              {"match_coverage", sfm_pruning::SubgraphAlignmentOptions::HypothesisSelection::kMatchCoverage},
+              {"most_trusted", sfm_pruning::SubgraphAlignmentOptions::HypothesisSelection::kMostTrusted}},
           CLI::ignore_case))
       ->default_str("match_coverage");
   group->add_option("--prune_coverage_break_even", alignment.coverage_break_even,
@@ -112,6 +124,23 @@ void AddPruningOptions(CLI::App* cmd, sfm_pruning::ViewGraphPruningOptions* opti
                     "Subgraph triangle: largest scale change of the composed frame transforms")
       ->check(CLI::Range(1.0, 1e9))
       ->capture_default_str();
+  using LoopMethod = sfm_pruning::SubgraphLoopOptions::Method;
+  group->add_option("--prune_loop_method", loops.method,
+                    "triangle_vote: cut pairs breaking more subgraph triangles than they close, then longer "
+                    "cycles; trusted_forest: the most trusted spanning forest of pairs is right, every other "
+                    "pair must close its cycle with it (docs/pruning.md)")
+      ->transform(CLI::CheckedTransformer(std::map<std::string, LoopMethod>{{"triangle_vote", LoopMethod::kTriangleVote},
+                                                                            {"trusted_forest", LoopMethod::kTrustedForest}},
+                                          CLI::ignore_case))
+      ->default_str("trusted_forest");
+  using LinkTrust = sfm_pruning::PairTrustMeasure;
+  group->add_option("--prune_link_trust", options->link_trust,
+                    "What ranks subgraph pairs in the loop check: match_coverage, or distinctive (the mean "
+                    "distinctiveness of the pair's inliers; repeated structure is matched by many views)")
+      ->transform(CLI::CheckedTransformer(std::map<std::string, LinkTrust>{{"match_coverage", LinkTrust::kMatchCoverage},
+                                                                           {"distinctive", LinkTrust::kDistinctiveShare}},
+                                          CLI::ignore_case))
+      ->default_str("distinctive");
   group->add_option("--prune_loop_max_cycle_length", loops.max_cycle_length,
                     "Longest cycle of subgraphs the second loop pass judges (below 4: off); on a broken "
                     "cycle the pair of lowest match coverage is cut")

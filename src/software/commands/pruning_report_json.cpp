@@ -54,7 +54,8 @@ nlohmann::json PruningReportJson(const sfm_pruning::ViewGraphPruningReport& prun
                             {"beta", h.beta},
                             {"expected_landmarks", h.expected_landmarks},
                             {"matched_landmarks", h.matched_landmarks},
-                            {"coverage_score", h.coverage_score}});
+                            {"coverage_score", h.coverage_score},
+                            {"trust", h.trust}});
     }
     pairs.push_back({{"hypotheses", std::move(hypotheses)},
                      {"selected_hypothesis", pair.selected_hypothesis},
@@ -68,7 +69,9 @@ nlohmann::json PruningReportJson(const sfm_pruning::ViewGraphPruningReport& prun
                      {"consistent_triangles", pair.consistent_triangles},
                      {"inconsistent_triangles", pair.inconsistent_triangles},
                      {"rejected_by_loops", pair.rejected_by_loops},
-                     {"rejected_by_cycle", pair.rejected_by_cycle}});
+                     {"rejected_by_cycle", pair.rejected_by_cycle},
+                     {"trust", pair.trust}});
+    if (pair.judged_by_forest) pairs.back()["forest_decision"] = LinkDecisionName(pair.forest_decision);
     if (pair.has_frame_transform) {
       pairs.back()["frame_rotation_deg"] =
           RadToDeg(RotationAngleBetween(pair.k2_to_k1.rotation, Eigen::Matrix3d::Identity()));
@@ -109,6 +112,7 @@ nlohmann::json PruningReportJson(const sfm_pruning::ViewGraphPruningReport& prun
           {"engine_runs", pruning.partition.num_engine_runs},
           {"phases", std::move(phases)},
           {"total_seconds", pruning.total_seconds},
+          {"reference_distinctive_share", pruning.reference_distinctive_share},
           {"tree", std::move(nodes)},
           {"subgraph_pairs", std::move(pairs)},
           {"subgraph_triangles", std::move(triangles)},

@@ -55,7 +55,8 @@ nlohmann::json SceneSummary(const SyntheticScene& scene) {
                      {"loop_candidates", o.loop_candidates},
                      {"loop_min_gap", o.loop_min_gap},
                      {"laps", o.laps},
-                     {"twin_fraction", o.twin_fraction}};
+                     {"twin_fraction", o.twin_fraction},
+                     {"street_module_width_m", o.street_module_width_m}};
   json["num_landmarks"] = scene.ground_truth.structure.size();
   json["num_twin_landmarks"] = scene.twin_landmarks.size();
   size_t num_true = 0, num_twin = 0, num_random = 0;
@@ -138,6 +139,8 @@ void AddSynthCommand(CLI::App& app) {
   cmd->add_option("--loop_min_gap", o.loop_min_gap, "sequential_large: frames between loop candidates (0: 50)");
   cmd->add_option("--laps", o.laps, "sequential_large: laps of the loop (0: 2)");
   cmd->add_option("--twin_fraction", o.twin_fraction, "sequential_large: fraction of repeated facades (default 0.25)");
+  cmd->add_option("--street_module_width", o.street_module_width_m, "street: width of the repeated facade, metres")
+      ->capture_default_str();
   cmd->add_option("--num_threads", o.num_threads, "Threads for matching (the output does not depend on it)")
       ->capture_default_str();
   cmd->callback([options, output]() {

@@ -1,0 +1,139 @@
+#!/usr/bin/env python3
+"""What perfect pair pruning could reach on the synthetic duplicate scenes: the ceiling of any
+view-graph pruning method, GLOBAL_PRUNED's included. Writes bench/sections/oracle_pruning.md.
+
+For each scene, the synthetic ground truth says how many of a pair's putative matches are true,
+twin (different copies of one texture: false but consistent with one wrong motion) or random
+(synthetic_scene.json). The oracle deletes from a copy of the scene's database every pair whose
+twin matches outnumber its true ones (or, with --twin_ratio R, exceed R times them), then runs
+GLOBAL (`prunesfm run`) and COLMAP 3.8's mapper (after its `exhaustive_matcher` verification) on
+the rest. A scene the oracle cannot recover is out of reach of pruning edges: its true pairs
+carry twin matches too, or deleting the twin pairs disconnects it. GLOBAL and GLOBAL_PRUNED on
+the full database are the comparison rows.
+
+Scenes are generated here (`prunesfm synth --seed S --scene NAME` plus any extra arguments given
+as NAME:ARGS, e.g. 'street_12m=street:--street_module_width 12'), so nothing depends on another
+script's work folder. Python 3 standard library only.
+"""
+
+import json
+import shlex
+import shutil
+import sqlite3
+import sys
+from pathlib import Path
+
+sys.path.insert(0, str(Path(__file__).resolve().parent))
+import bench_support as bs  # noqa: E402
+import run_benchmarks as rb  # noqa: E402
+
+DEFAULT_SCENES = ["orbit_symmetric", "street", "street_12m=street:--street_module_width 12", "courtyard"]
+COLMAP_PAIR_ID_FACTOR = 2147483647  # pair_id = id1 * factor + id2, id1 < id2 (COLMAP's database)
+
+
+def parse_scene(spec):
+    label, _, rest = spec.partition("=")
+    scene, _, extra = rest.partition(":") if rest else (label, "", "")
+    return label, scene or label, shlex.split(extra)
+
+
+def twin_dominated_pairs(scene_json, ratio):
+    stats = json.loads(Path(scene_json).read_text())["pairs"]
+    return {(p["i"], p["j"]) for p in stats if p["twin"] > ratio * p["true"]}, len(stats)
+
+
+def delete_pairs(database, pairs):
+    """Deletes the putative matches of `pairs` (view indices = the number in view_NNNNN.jpg)."""
+    db = sqlite3.connect(database)
+    view_of = {image_id: int(Path(name).stem.split("_")[-1]) for image_id, name in db.execute(
+        "SELECT image_id, name FROM images")}
+    deleted = 0
+    for (pair_id,) in list(db.execute("SELECT pair_id FROM matches")):
+        a, b = divmod(pair_id, COLMAP_PAIR_ID_FACTOR)
+        views = tuple(sorted((view_of[a], view_of[b])))
+        if views in pairs:
+            db.execute("DELETE FROM matches WHERE pair_id = ?", (pair_id,))
+            deleted += 1
+    db.commit()
+    db.close()
+    return deleted
+
+
+def run_ours(args, prunesfm, database, gt, out, engine):
+    argv = [prunesfm, "run", "--database", database, "--image_path", out / "images", "--output", out / "result",
+            "--engine", engine, "--seed", args.seed, "--num_threads", args.threads]
+    stage = rb.run_stage("run", argv, out / "run.log", args.timeout)
+    model = out / "result" / "sparse" / "0" if stage["rc"] == 0 else None
+    return bs.evaluate_against(prunesfm, model, gt, out, args.seed, args.timeout)
+
+
+def run_colmap(args, prunesfm, database, gt, out):
+    t = str(args.threads)
+    rb.run_stage("match", [args.colmap, "exhaustive_matcher", "--database_path", database, "--SiftMatching.use_gpu", "0",
+                           "--SiftMatching.num_threads", t], out / "match.log", args.timeout, rb.colmap_env())
+    (out / "images").mkdir(parents=True, exist_ok=True)
+    _, model = bs.colmap_mapper(args.colmap, database, out / "images", out, t, args.timeout, True)
+    return bs.evaluate_against(prunesfm, model, gt, out, args.seed, args.timeout)
+
+
+def main():
+    parser = bs.argument_parser(__doc__, "/tmp/prunesfm-oracle")
+    parser.add_argument("--scenes", default=",".join(DEFAULT_SCENES),
+                        help="comma-separated LABEL or LABEL=SCENE:EXTRA_SYNTH_ARGS")
+    parser.add_argument("--twin_ratio", type=float, default=1.0,
+                        help="a pair is deleted when its twin matches exceed this times its true ones")
+    args = parser.parse_args()
+    prunesfm = str(Path(args.prunesfm).resolve()) if args.prunesfm else str(rb.find_prunesfm(None))
+    lines = bs.header_lines("Oracle pruning: the ceiling of pruning view-graph edges", sys.argv, prunesfm, args.colmap)
+    lines += [f"Pairs whose twin matches exceed {args.twin_ratio:g}× their true matches (synthetic ground truth) "
+              "are deleted from the database before GLOBAL and COLMAP's mapper run; GLOBAL and GLOBAL_PRUNED on "
+              f"the full database for comparison. `prunesfm synth --seed {args.seed}`, AUC@3 / 5 / 10, "
+              "registered images.", "",
+              "| scene | pairs deleted / all | GLOBAL | GLOBAL_PRUNED | oracle + GLOBAL | oracle + COLMAP |",
+              "|---|---|---|---|---|---|"]
+    results = {}
+    for spec in [s for s in args.scenes.split(",") if s]:
+        label, scene, extra = parse_scene(spec)
+        work = Path(args.work).resolve() / label
+        if work.exists():
+            shutil.rmtree(work)
+        work.mkdir(parents=True)
+        synth = work / "scene"
+        rb.run_stage("synth", [prunesfm, "synth", "--scene", scene, "--seed", args.seed, "--output", synth, *extra],
+                     work / "synth.log", args.timeout)
+        gt = synth / "ground_truth" / "gt_cameras.txt"
+        row = {}
+        for engine in ("GLOBAL", "GLOBAL_PRUNED"):
+            db = work / f"{engine}.db"
+            rb.copy_database(synth / "database.db", db)
+            row[engine] = run_ours(args, prunesfm, db, gt, work / engine, engine)
+        pairs, num_pairs = twin_dominated_pairs(synth / "ground_truth" / "synthetic_scene.json", args.twin_ratio)
+        oracle_db = work / "oracle.db"
+        rb.copy_database(synth / "database.db", oracle_db)
+        row["deleted"] = delete_pairs(oracle_db, pairs)
+        row["pairs"] = num_pairs
+        row["oracle GLOBAL"] = run_ours(args, prunesfm, oracle_db, gt, work / "oracle_global", "GLOBAL")
+        if args.colmap:
+            colmap_db = work / "oracle_colmap.db"
+            rb.copy_database(oracle_db, colmap_db)
+            row["oracle colmap"] = run_colmap(args, prunesfm, colmap_db, gt, work / "oracle_colmap")
+        results[label] = row
+
+        def cell(r):
+            if r is None:
+                return "–"
+            return (f"{r['auc']['3']:.1f} / {r['auc']['5']:.1f} / {r['auc']['10']:.1f} "
+                    f"({r['registered']}/{r['num_reference']})")
+        lines.append(f"| {label} (`{scene}{(' ' + ' '.join(extra)) if extra else ''}`) | {row['deleted']} / {num_pairs} | "
+                     f"{cell(row['GLOBAL'])} | {cell(row['GLOBAL_PRUNED'])} | {cell(row['oracle GLOBAL'])} | "
+                     f"{cell(row.get('oracle colmap'))} |")
+        print(f"{label}: {lines[-1]}", flush=True)
+    (Path(args.work) / "results.json").write_text(json.dumps(results, indent=2) + "\n")
+    lines += ["", "Reading: where the oracle folds too, the scene is beyond pruning edges (docs/pruning.md, "
+              "\"Repeated structure seen from many places\")."]
+    bs.write_fragment("oracle_pruning", lines)
+    return 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())

@@ -1,0 +1,90 @@
+#include "sfm_pruning/pruning/trusted_link_forest.hpp"
+
+#include <algorithm>
+#include <numeric>
+#include <utility>
+
+#include "sfm_pruning/pruning/subgraph_cycle_consistency.hpp"
+#include "sfm_pruning/view_graph/union_find.hpp"
+
+namespace sfm_pruning {
+namespace {
+
+// The forest grown so far: per subgraph, (neighbour, pair) of its forest pairs.
+class GrowingForest {
+ public:
+  explicit GrowingForest(size_t num_subgraphs) : adjacent_(num_subgraphs), sets_(num_subgraphs) {}
+
+  bool Connected(int a, int b) { return sets_.Connected(static_cast<size_t>(a), static_cast<size_t>(b)); }
+
+  void Add(int a, int b, size_t pair) {
+    sets_.Union(static_cast<size_t>(a), static_cast<size_t>(b));
+    adjacent_[static_cast<size_t>(a)].push_back({b, pair});
+    adjacent_[static_cast<size_t>(b)].push_back({a, pair});
+  }
+
+  // The subgraphs from `from` to `to` along the forest and the pairs between them (connected ends).
+  std::pair<std::vector<int>, std::vector<size_t>> Path(int from, int to) const {
+    return ForestPath(adjacent_, from, to);
+  }
+
+ private:
+  ForestAdjacency adjacent_;
+  UnionFind<size_t> sets_;
+};
+
+// The pair's transform from `from`'s frame into `into`'s (one of its two ends each).
+Similarity3 TransformInto(const SubgraphPairLink& pair, int into) {
+  return into == pair.k1 ? pair.k2_to_k1 : pair.k2_to_k1.Inverse();
+}
+
+}  // namespace
+
+const char* LinkDecisionName(LinkDecision decision) {
+  switch (decision) {
+    case LinkDecision::kForest: return "forest";
+    case LinkDecision::kClosesCycle: return "closes_cycle";
+    case LinkDecision::kBreaksCycle: return "breaks_cycle";
+    case LinkDecision::kRedundantUnverified: return "redundant_unverified";
+  }
+  return "unknown";
+}
+
+TrustedForestResult SelectLinksByTrustedForest(const std::vector<SubgraphPairLink>& pairs,
+                                               const std::vector<SubgraphFrame>& frames,
+                                               const SubgraphLoopOptions& options) {
+  TrustedForestResult result;
+  result.decisions.assign(pairs.size(), LinkDecision::kForest);
+  result.cycle_of.assign(pairs.size(), -1);
+  std::vector<size_t> order(pairs.size());
+  std::iota(order.begin(), order.end(), size_t{0});
+  std::stable_sort(order.begin(), order.end(), [&](size_t a, size_t b) {
+    if (pairs[a].trust != pairs[b].trust) return pairs[a].trust > pairs[b].trust;
+    return pairs[a].support > pairs[b].support;
+  });
+  GrowingForest forest(frames.size());
+  for (size_t p : order) {
+    const SubgraphPairLink& pair = pairs[p];
+    if (!forest.Connected(pair.k1, pair.k2)) {
+      forest.Add(pair.k1, pair.k2, p);
+      continue;
+    }
+    // The cycle c0 = k1 -> ... (forest) ... -> c(l-1) = k2 -> k1 (this pair).
+    auto [nodes, cycle_pairs] = forest.Path(pair.k1, pair.k2);
+    cycle_pairs.push_back(p);
+    const bool verifiable = std::all_of(cycle_pairs.begin(), cycle_pairs.end(),
+                                        [&](size_t q) { return pairs[q].has_transform; });
+    if (!verifiable) {
+      result.decisions[p] = LinkDecision::kRedundantUnverified;
+      continue;
+    }
+    std::vector<Similarity3> to_previous;
+    for (size_t k = 0; k < nodes.size(); ++k) to_previous.push_back(TransformInto(pairs[cycle_pairs[k]], nodes[k]));
+    result.cycles.push_back(MeasureSubgraphCycle(nodes, to_previous, frames, options));
+    result.cycle_of[p] = static_cast<int>(result.cycles.size()) - 1;
+    result.decisions[p] = result.cycles.back().consistent ? LinkDecision::kClosesCycle : LinkDecision::kBreaksCycle;
+  }
+  return result;
+}
+
+}  // namespace sfm_pruning
