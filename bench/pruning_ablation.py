@@ -1,10 +1,11 @@
 #!/usr/bin/env python3
 """The paper's ablation table (issue 5) on one duplicate-structure scene: GLOBAL_PRUNED
 with its defaults, without recursion (one Louvain pass), without each consistency test (loop,
-e_r, e_t), with 20 / 30 / 40 RANSAC iterations, and with the paper's setting at the two points
-where PruneSfM deviates from it by default (the RANSAC sample capped at 4 edges, the match
-coverage that may overrule the largest consensus; docs/pruning.md) and without PruneSfM's two
-additions (without the loop check across subgraph pairs; with the refit of the RANSAC winner,
+e_r, e_t), with 20 / 30 / 40 RANSAC iterations, and with the paper's setting at the points
+where PruneSfM deviates from it by default (the RANSAC sample capped at 2 edges, the match
+coverage that may overrule the largest consensus, the partition weighted by distinctiveness;
+docs/pruning.md) and without PruneSfM's additions (without the loop check across subgraph
+pairs, the triangle vote instead of the trusted forest; with the refit of the RANSAC winner,
 off by default). GLOBAL on the
 same database is the baseline row. AUC@3/5/10 against the ground truth, edges removed, wall time.
 
@@ -42,7 +43,15 @@ CONFIGS = [
     ("paper's vote and sample", "GLOBAL_PRUNED",
      ["--prune_hypothesis_selection", "largest_consensus", "--prune_max_sample_size", "0"]),
     ("without the loop check across subgraph pairs", "GLOBAL_PRUNED", ["--prune_subgraph_loops", "false"]),
-    ("loop check on triangles only (no cycle pass)", "GLOBAL_PRUNED", ["--prune_loop_max_cycle_length", "3"]),
+    ("paper's partition weight: inlier counts", "GLOBAL_PRUNED", ["--prune_partition_weight", "inliers"]),
+    ("trusted forest ranked by match coverage", "GLOBAL_PRUNED", ["--prune_link_trust", "match_coverage"]),
+    ("triangle vote and longer cycles (before session 15)", "GLOBAL_PRUNED",
+     ["--prune_loop_method", "triangle_vote", "--prune_link_trust", "match_coverage"]),
+    ("session 14's defaults: inlier partition, triangle vote", "GLOBAL_PRUNED",
+     ["--prune_partition_weight", "inliers", "--prune_loop_method", "triangle_vote", "--prune_link_trust",
+      "match_coverage"]),
+    ("triangle vote on triangles only (no cycle pass)", "GLOBAL_PRUNED",
+     ["--prune_loop_method", "triangle_vote", "--prune_loop_max_cycle_length", "3"]),
     ("below the break-even the largest candidate wins", "GLOBAL_PRUNED",
      ["--prune_relative_coverage_break_even", "0"]),
     ("RANSAC sample cap 4 (before session 14)", "GLOBAL_PRUNED", ["--prune_max_sample_size", "4"]),

@@ -265,6 +265,36 @@ TEST(SubgraphAlignment, EdgeWithTooFewCorrespondencesDoesNotVote) {
   EXPECT_DOUBLE_EQ(why.threshold, 12.0);
 }
 
+TEST(SubgraphAlignment, WithoutScaleTheRotationsAloneSeparateATwinThatTurns) {
+  // Every connecting edge lands on view 8: no sample carries scale information (β needs two
+  // different views j), so no hypothesis is valid. The chained rotations still agree for the four
+  // true edges and differ by 25° for the two twins.
+  PruningTestScene scene = MakePruningTestScene(16, 50, 11);
+  for (IndexT i : {0u, 1u, 2u, 3u}) scene.AddExactEdge(i, 8);
+  Similarity twin;
+  twin.rotation = ExpSO3(DegToRad(25.0) * Eigen::Vector3d::UnitZ());
+  twin.translation = Eigen::Vector3d(0.3, 0.2, 0.0);
+  for (IndexT i : {4u, 5u}) scene.AddTwinEdge(i, 8, twin);
+  const SubgraphSolution k1 = scene.Solution(kViewsK1, RandomSimilarity(1, kScaleK1));
+  const SubgraphSolution k2 = scene.Solution(kViewsK2, RandomSimilarity(2, kScaleK2));
+  SubgraphAlignmentResult result = AlignSubgraphPair(scene.graph, k1, k2, scene.views_and_intrinsics, scene.features);
+  ASSERT_EQ(result.status, SubgraphAlignmentStatus::kRotationOnly);
+  EXPECT_FALSE(result.has_frame_transform);
+  EXPECT_EQ(result.consensus_size, 4u);
+  EXPECT_EQ(result.KeptEdges(), std::vector<ViewPair>({{0, 8}, {1, 8}, {2, 8}, {3, 8}}));
+  EXPECT_EQ(result.RemovedEdges(), std::vector<ViewPair>({{4, 8}, {5, 8}}));
+  for (const InterSubgraphEdgeDecision& decision : result.edges) {
+    if (decision.kept) continue;
+    EXPECT_EQ(decision.verdict, InterSubgraphVerdict::kRotationDeviation);
+    EXPECT_NEAR(decision.rotation_deviation_deg, 25.0, 0.5);
+  }
+  SubgraphAlignmentOptions paper;
+  paper.rotation_only_fallback = false;
+  result = AlignSubgraphPair(scene.graph, k1, k2, scene.views_and_intrinsics, scene.features, paper);
+  EXPECT_EQ(result.status, SubgraphAlignmentStatus::kNoValidHypothesis);
+  EXPECT_EQ(result.KeptEdges().size(), 6u);
+}
+
 TEST(SubgraphAlignment, PairsWithFewEdgesFollowTheirPolicy) {
   PruningTestScene scene = MakePruningTestScene(16, 50, 11);
   scene.AddExactEdge(0, 8);

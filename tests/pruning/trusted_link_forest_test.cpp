@@ -98,6 +98,19 @@ TEST(TrustedLinkForest, PairsWithoutTransformBridgeButNeverVerify) {
   EXPECT_EQ(result.decisions[6], LinkDecision::kRedundantUnverified);
   EXPECT_EQ(result.cycle_of[5], -1);
   EXPECT_EQ(result.cycles.size(), 1u);
+  // Unverifiable but as distinctive as the subgraphs' own edges: kept.
+  SubgraphLoopOptions lenient;
+  lenient.min_unverified_trust = 0.55;
+  const TrustedForestResult kept = SelectLinksByTrustedForest(pairs, scene.subgraphs, lenient);
+  EXPECT_EQ(kept.decisions[5], LinkDecision::kKeptUnverified);
+  EXPECT_EQ(kept.decisions[6], LinkDecision::kRedundantUnverified);
+  // ... unless its placed views miss what they should see.
+  std::vector<SubgraphPairLink> missing = pairs;
+  missing[5].relative_coverage = 0.5;
+  EXPECT_EQ(SelectLinksByTrustedForest(missing, scene.subgraphs, lenient).decisions[5],
+            LinkDecision::kRedundantUnverified);
+  missing[5].relative_coverage = 0.9;
+  EXPECT_EQ(SelectLinksByTrustedForest(missing, scene.subgraphs, lenient).decisions[5], LinkDecision::kKeptUnverified);
 }
 
 TEST(TrustedLinkForest, LongCyclesGetThePapersLoopFactor) {

@@ -3,10 +3,54 @@
 #include "sfm_pruning/view_graph/distinctive_weights.hpp"
 
 namespace sfm_pruning {
+namespace {
 
-PairTrust::PairTrust(PairTrustMeasure measure, const ViewGraph& graph, const std::vector<AcceptedSubgraph>& accepted)
+const CameraIntrinsics* FindIntrinsics(const SfmData& views_and_intrinsics, IndexT view_id) {
+  const auto view = views_and_intrinsics.views.find(view_id);
+  if (view == views_and_intrinsics.views.end()) return nullptr;
+  const auto intrinsics = views_and_intrinsics.intrinsics.find(view->second.id_intrinsic);
+  return intrinsics == views_and_intrinsics.intrinsics.end() ? nullptr : &intrinsics->second;
+}
+
+// Σ matched / Σ expected over every edge inside a subgraph with both views posed there, each edge
+// measured both ways with the subgraph's own poses; 0 when nothing is expected anywhere.
+double InsideMatchCoverage(const ViewGraph& graph, const std::vector<AcceptedSubgraph>& accepted,
+                           const SfmData& views_and_intrinsics, const EdgePlacementOptions& placement) {
+  double expected = 0.0;
+  double matched = 0.0;
+  for (const AcceptedSubgraph& subgraph : accepted) {
+    const SubgraphSolution& solution = subgraph.solution;
+    const std::map<ObservationKey, IndexT> landmarks = IndexLandmarksByObservation(solution);
+    for (const auto& [view_a, pose_a] : solution.poses) {
+      for (const auto& [view_b, pose_b] : solution.poses) {
+        if (view_a == view_b || !graph.HasValidEdge(view_a, view_b)) continue;
+        const CameraIntrinsics* intrinsics_b = FindIntrinsics(views_and_intrinsics, view_b);
+        if (intrinsics_b == nullptr) continue;
+        const MatchCoverage coverage =
+            MeasureMatchCoverage(graph, view_a, view_b, pose_b, solution, landmarks, *intrinsics_b, placement);
+        expected += static_cast<double>(coverage.expected);
+        matched += static_cast<double>(coverage.matched);
+      }
+    }
+  }
+  return expected > 0.0 ? matched / expected : 0.0;
+}
+
+std::vector<ViewPair> EdgesOf(const SubgraphAlignmentResult& alignment, bool all_edges) {
+  std::vector<ViewPair> edges;
+  for (const InterSubgraphEdgeDecision& decision : alignment.edges) {
+    if (decision.kept || all_edges) edges.push_back({decision.placement.view_i, decision.placement.view_j});
+  }
+  return edges;
+}
+
+}  // namespace
+
+PairTrust::PairTrust(PairTrustMeasure measure, const ViewGraph& graph, const std::vector<AcceptedSubgraph>& accepted,
+                     const SfmData& views_and_intrinsics, const EdgePlacementOptions& placement)
     : measure_(measure), graph_(graph) {
-  if (measure_ != PairTrustMeasure::kDistinctiveShare) return;
+  reference_coverage_ = InsideMatchCoverage(graph, accepted, views_and_intrinsics, placement);
+  if (measure_ == PairTrustMeasure::kMatchCoverage) return;
   edge_weights_ = DistinctiveMatchWeights(graph, FeatureDistinctiveness(graph));
   std::map<IndexT, size_t> subgraph_of;
   for (size_t k = 0; k < accepted.size(); ++k) {
@@ -34,9 +78,24 @@ double PairTrust::Share(const std::vector<ViewPair>& edges) const {
   return inliers > 0.0 ? weight / inliers : 0.0;
 }
 
-double PairTrust::Of(const std::vector<ViewPair>& edges, const AlignmentHypothesis* selected) const {
-  if (measure_ == PairTrustMeasure::kMatchCoverage) return selected != nullptr ? selected->Coverage() : 0.0;
-  const double share = Share(edges);
+double PairTrust::RelativeCoverageOf(const SubgraphAlignmentResult& alignment, bool all_edges) const {
+  double expected = 0.0;
+  double matched = 0.0;
+  for (const InterSubgraphEdgeDecision& decision : alignment.edges) {
+    if (!(decision.kept || all_edges) || decision.placement.status != EdgePlacementStatus::kPlaced) continue;
+    expected += static_cast<double>(decision.placement.num_expected_landmarks);
+    matched += static_cast<double>(decision.placement.num_matched_landmarks);
+  }
+  if (!(expected > 0.0) || !(reference_coverage_ > 0.0)) return -1.0;
+  return matched / expected / reference_coverage_;
+}
+
+double PairTrust::Of(const SubgraphAlignmentResult& alignment, bool all_edges) const {
+  if (measure_ == PairTrustMeasure::kMatchCoverage) {
+    if (alignment.selected_hypothesis < 0) return 0.0;
+    return alignment.hypotheses[static_cast<size_t>(alignment.selected_hypothesis)].Coverage();
+  }
+  const double share = Share(EdgesOf(alignment, all_edges));
   return reference_share_ > 0.0 ? share / reference_share_ : share;
 }
 

@@ -184,25 +184,42 @@ std::vector<bool> RelativelyRuledOut(const std::vector<AlignmentHypothesis>& hyp
   return out;
 }
 
-// kMostTrusted: the candidate of highest trust among those the coverage does not rule out and that
-// have at least two consensus edges (ties: the larger consensus, then the earlier); the largest
-// when none is eligible.
-size_t MostTrustedCandidate(const std::vector<AlignmentHypothesis>& hypotheses, const std::vector<bool>& ruled_out) {
-  size_t chosen = 0;
-  for (size_t c = 1; c < hypotheses.size(); ++c) {
-    const AlignmentHypothesis& a = hypotheses[c];
-    const AlignmentHypothesis& b = hypotheses[chosen];
-    const bool a_eligible = a.consensus_size >= 2 && !ruled_out[c];
-    const bool b_eligible = b.consensus_size >= 2 && !ruled_out[chosen];
-    if (a_eligible != b_eligible) {
-      if (a_eligible) chosen = c;
-      continue;
+// Options::rotation_only_fallback: every voter tried as the centre, the largest set of voters whose
+// chained rotations lie within max_rotation_deviation_deg of it (ties: the smaller total
+// deviation, then the earlier centre). Decides the voters when that set has two edges or more.
+bool ApplyRotationOnlyConsensus(const std::vector<ChainedRelativePose>& chains,
+                                const std::vector<size_t>& voter_edge_index, const Options& options,
+                                SubgraphAlignmentResult* result) {
+  const double threshold = options.max_rotation_deviation_deg;
+  size_t best_centre = 0;
+  size_t best_count = 0;
+  double best_total = 0.0;
+  for (size_t centre = 0; centre < chains.size(); ++centre) {
+    size_t count = 0;
+    double total = 0.0;
+    for (const ChainedRelativePose& chain : chains) {
+      const double deviation = RadToDeg(RotationAngleBetween(chains[centre].rotation, chain.rotation));
+      if (deviation > threshold) continue;
+      ++count;
+      total += deviation;
     }
-    const bool better = a_eligible ? (a.trust > b.trust || (a.trust == b.trust && a.consensus_size > b.consensus_size))
-                                   : a.consensus_size > b.consensus_size;
-    if (better) chosen = c;
+    if (count > best_count || (count == best_count && total < best_total)) {
+      best_centre = centre;
+      best_count = count;
+      best_total = total;
+    }
   }
-  return chosen;
+  if (best_count < 2) return false;
+  result->status = SubgraphAlignmentStatus::kRotationOnly;
+  result->consensus_size = best_count;
+  result->mean_rotation = chains[best_centre].rotation;
+  for (size_t k = 0; k < chains.size(); ++k) {
+    InterSubgraphEdgeDecision& decision = result->edges[voter_edge_index[k]];
+    decision.rotation_deviation_deg = RadToDeg(RotationAngleBetween(chains[best_centre].rotation, chains[k].rotation));
+    decision.kept = decision.rotation_deviation_deg <= threshold;
+    decision.verdict = decision.kept ? InterSubgraphVerdict::kConsistent : InterSubgraphVerdict::kRotationDeviation;
+  }
+  return true;
 }
 
 // Runs RANSAC over the voting edges and writes the verdicts of the voters into `result`.
@@ -218,7 +235,7 @@ void RunRansac(const std::vector<ChainedRelativePose>& chains, const std::vector
   std::iota(pool.begin(), pool.end(), size_t{0});
   std::vector<Candidate> candidates;
   const size_t max_candidates =
-      options.hypothesis_selection == Options::HypothesisSelection::kLargestConsensus ? 1 : options.max_hypotheses;
+      options.hypothesis_selection == Options::HypothesisSelection::kMatchCoverage ? options.max_hypotheses : 1;
   while (candidates.size() < std::max<size_t>(max_candidates, 1)) {
     std::optional<Candidate> candidate = RansacOverPool(chains, pool, options, &rng, result);
     if (!candidate) break;
@@ -234,6 +251,11 @@ void RunRansac(const std::vector<ChainedRelativePose>& chains, const std::vector
     if (rest.size() < std::max<size_t>(options.min_edges_for_ransac, 2)) break;
     pool = std::move(rest);
   }
+  const bool supported = std::any_of(candidates.begin(), candidates.end(),
+                                     [](const Candidate& c) { return c.consensus.count > 0; });
+  if (!supported && options.rotation_only_fallback && ApplyRotationOnlyConsensus(chains, voter_edge_index, options, result)) {
+    return;
+  }
   if (candidates.empty()) {
     result->status = SubgraphAlignmentStatus::kNoValidHypothesis;
     ApplyPolicyToVoters(result, InterSubgraphVerdict::kUnjudged, true);
@@ -245,15 +267,6 @@ void RunRansac(const std::vector<ChainedRelativePose>& chains, const std::vector
     summary.consensus_size = candidates[c].consensus.count;
     summary.beta = candidates[c].hypothesis.beta;
     ScoreCoverage(candidates[c].consensus, coverage, options, &summary);
-    if (options.candidate_trust) {
-      std::vector<ViewPair> edges;
-      for (size_t k = 0; k < n; ++k) {
-        if (!candidates[c].consensus.inlier[k]) continue;
-        const EdgePlacement& placement = result->edges[voter_edge_index[k]].placement;
-        edges.push_back({placement.view_i, placement.view_j});
-      }
-      summary.trust = options.candidate_trust(edges);
-    }
     result->hypotheses.push_back(summary);
   }
   // Candidates whose edges miss more landmarks than the break-even are ruled out; the largest
@@ -272,14 +285,10 @@ void RunRansac(const std::vector<ChainedRelativePose>& chains, const std::vector
   for (size_t c = 0; c < candidates.size(); ++c) {
     if (result->hypotheses[c].consensus_size == 0 && consensus_found) ruled_out[c] = true;
   }
-  if (options.hypothesis_selection == Options::HypothesisSelection::kMostTrusted) {
-    chosen = MostTrustedCandidate(result->hypotheses, ruled_out);
-  } else {
-    for (size_t c = 1; c < candidates.size(); ++c) {
-      const bool larger = result->hypotheses[c].consensus_size > result->hypotheses[chosen].consensus_size;
-      const bool better = ruled_out[chosen] ? (!ruled_out[c] || larger) : (!ruled_out[c] && larger);
-      if (better) chosen = c;
-    }
+  for (size_t c = 1; c < candidates.size(); ++c) {
+    const bool larger = result->hypotheses[c].consensus_size > result->hypotheses[chosen].consensus_size;
+    const bool better = ruled_out[chosen] ? (!ruled_out[c] || larger) : (!ruled_out[c] && larger);
+    if (better) chosen = c;
   }
   result->selected_hypothesis = static_cast<int>(chosen);
   const std::optional<Hypothesis> best = candidates[chosen].hypothesis;
@@ -313,6 +322,7 @@ const char* SubgraphAlignmentStatusName(SubgraphAlignmentStatus status) {
     case SubgraphAlignmentStatus::kAligned: return "aligned";
     case SubgraphAlignmentStatus::kTooFewVotingEdges: return "too_few_voting_edges";
     case SubgraphAlignmentStatus::kNoValidHypothesis: return "no_valid_hypothesis";
+    case SubgraphAlignmentStatus::kRotationOnly: return "rotation_only";
   }
   return "unknown";
 }

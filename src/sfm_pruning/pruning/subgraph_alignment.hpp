@@ -18,7 +18,6 @@
 
 #include <cstddef>
 #include <cstdint>
-#include <functional>
 #include <limits>
 #include <vector>
 
@@ -67,10 +66,7 @@ struct SubgraphAlignmentOptions {
   // two arcs) the twin edges are the larger consistent set, but each of them matches only the copy
   // and misses the unique texture its placed view should see (measured coverage ≤ 0.58 against
   // 0.6–0.9 for true edges; docs/pruning.md).
-  // kMostTrusted: the same candidates, and the same ruling-out by coverage, as kMatchCoverage; among
-  // the others of at least two edges the one whose consensus edges `candidate_trust` ranks highest
-  // wins instead of the largest (ties: the larger).
-  enum class HypothesisSelection { kLargestConsensus, kMatchCoverage, kMostTrusted };
+  enum class HypothesisSelection { kLargestConsensus, kMatchCoverage };
   HypothesisSelection hypothesis_selection = HypothesisSelection::kMatchCoverage;
   size_t max_hypotheses = 3;
   double coverage_break_even = 0.5;
@@ -81,9 +77,13 @@ struct SubgraphAlignmentOptions {
   // {0005–0008}×{0000–0004} had 7 edges at coverage 0.13, the true one 6 edges at 0.31, and the
   // largest-of-all rule folded the street.
   double relative_coverage_break_even = 0.5;
-  // kMostTrusted: the trust of a candidate's consensus edges (oriented (i, j)); set by the caller
-  // (view_graph_pruning.cpp: the pair trust, pair_trust.hpp).
-  std::function<double(const std::vector<ViewPair>& edges)> candidate_trust;
+
+  // When no sample gives a valid hypothesis (every edge lands on the same view j, or β ≤ 0) or no
+  // hypothesis is supported by any edge, the chained rotations alone still separate a twin that
+  // turns from the true edges (the courtyard's walls: 90°): the largest set of voting edges within
+  // max_rotation_deviation_deg of one of them is kept when it has at least two edges
+  // (kRotationOnly). Off: the paper, which keeps every voting edge of such a pair.
+  bool rotation_only_fallback = true;
 
   // Pairs with fewer voting edges than this are not tested by RANSAC (the paper is silent).
   // With 1–2 votes there is no majority to tell the wrong edge from the right one.
@@ -101,6 +101,8 @@ enum class SubgraphAlignmentStatus {
   kAligned,             // RANSAC ran and found a hypothesis
   kTooFewVotingEdges,   // fewer than min_edges_for_ransac voting edges; few_edges policy applied
   kNoValidHypothesis,   // every sample was degenerate (no scale, β ≤ 0): voting edges kept
+  kRotationOnly,        // no supported hypothesis with a scale; the rotation-only consensus decided
+                        // (rotation_only_fallback); no frame transform
 };
 
 const char* SubgraphAlignmentStatusName(SubgraphAlignmentStatus status);
@@ -139,7 +141,6 @@ struct AlignmentHypothesis {
   size_t expected_landmarks = 0;  // Σ over the consensus edges (EdgePlacement coverage)
   size_t matched_landmarks = 0;
   double coverage_score = 0.0;  // matched − coverage_break_even · expected
-  double trust = 0.0;           // candidate_trust of the consensus edges (kMostTrusted)
 
   // matched / expected; infinity when nothing was expected (no evidence against the candidate).
   double Coverage() const {

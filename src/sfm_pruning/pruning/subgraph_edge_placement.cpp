@@ -13,14 +13,17 @@ AbsolutePoseOptions DefaultSubgraphPnpOptions() {
   return options;
 }
 
-namespace {
-
-// Fills num_expected_landmarks / num_matched_landmarks of a placed edge (see EdgePlacement).
-void MeasureMatchCoverage(IndexT view_i, const Pose& pose_i, const std::map<ObservationKey, IndexT>& landmarks_k1,
-                          const SubgraphSolution& k1, const CameraIntrinsics& intrinsics_j,
-                          const std::set<IndexT>& matched_landmarks, const EdgePlacementOptions& options,
-                          EdgePlacement* placement) {
-  const Pose& pose_j = placement->pose_j_in_k1;
+MatchCoverage MeasureMatchCoverage(const ViewGraph& graph, IndexT view_i, IndexT view_j, const Pose& pose_j,
+                                   const SubgraphSolution& k1, const std::map<ObservationKey, IndexT>& landmarks_k1,
+                                   const CameraIntrinsics& intrinsics_j, const EdgePlacementOptions& options) {
+  MatchCoverage coverage;
+  const auto pose_i = k1.poses.find(view_i);
+  if (pose_i == k1.poses.end()) return coverage;
+  std::set<IndexT> matched_landmarks;
+  for (const FeatureMatch& match : graph.OrientedMatches(view_i, view_j)) {
+    const auto landmark = landmarks_k1.find({view_i, match.i});
+    if (landmark != landmarks_k1.end()) matched_landmarks.insert(landmark->second);
+  }
   const double margin = options.coverage_image_margin_px;
   const double max_angle = DegToRad(options.coverage_max_ray_angle_deg);
   std::set<IndexT> seen_by_i;
@@ -35,13 +38,13 @@ void MeasureMatchCoverage(IndexT view_i, const Pose& pose_i, const std::map<Obse
           pixel.y() <= intrinsics_j.height() - margin)) {
       continue;
     }
-    if (AngleBetweenVectors(X - pose_i.center, X - pose_j.center) > max_angle) continue;
-    ++placement->num_expected_landmarks;
-    placement->num_matched_landmarks += matched_landmarks.count(it->second);
+    if (AngleBetweenVectors(X - pose_i->second.center, X - pose_j.center) > max_angle) continue;
+    ++coverage.expected;
+    coverage.matched += matched_landmarks.count(it->second);
   }
+  return coverage;
 }
 
-}  // namespace
 
 const char* EdgePlacementStatusName(EdgePlacementStatus status) {
   switch (status) {
@@ -83,13 +86,11 @@ EdgePlacement PlaceViewInSubgraph(const ViewGraph& graph, IndexT view_i, IndexT 
 
   std::vector<Eigen::Vector3d> bearings;
   std::vector<Eigen::Vector3d> points;
-  std::set<IndexT> matched_landmarks;
   for (const FeatureMatch& match : graph.OrientedMatches(view_i, view_j)) {
     const auto landmark = landmarks_k1.find({view_i, match.i});
     if (landmark == landmarks_k1.end() || match.j >= features_j->second.size()) continue;
     bearings.push_back(intrinsics->second.Unproject(features_j->second.Position(match.j)));
     points.push_back(k1.landmarks.at(landmark->second).X);
-    matched_landmarks.insert(landmark->second);
   }
   placement.num_correspondences = points.size();
   if (points.size() < options.min_correspondences) {
@@ -108,11 +109,10 @@ EdgePlacement PlaceViewInSubgraph(const ViewGraph& graph, IndexT view_i, IndexT 
   }
   placement.status = EdgePlacementStatus::kPlaced;
   placement.pose_j_in_k1 = pose.pose;
-  const auto pose_i = k1.poses.find(view_i);
-  if (pose_i != k1.poses.end()) {
-    MeasureMatchCoverage(view_i, pose_i->second, landmarks_k1, k1, intrinsics->second, matched_landmarks, options,
-                         &placement);
-  }
+  const MatchCoverage coverage = MeasureMatchCoverage(graph, view_i, view_j, placement.pose_j_in_k1, k1, landmarks_k1,
+                                                      intrinsics->second, options);
+  placement.num_expected_landmarks = coverage.expected;
+  placement.num_matched_landmarks = coverage.matched;
   return placement;
 }
 

@@ -72,6 +72,16 @@ struct EdgePlacement {
 std::vector<ViewPair> ConnectingEdges(const ViewGraph& graph, const std::set<IndexT>& views_k1,
                                       const std::set<IndexT>& views_k2);
 
+// Match coverage of the edge (i, j) with j at `pose_j` in k1's frame (i posed in k1; nothing
+// expected otherwise): EdgePlacement::num_expected_landmarks / num_matched_landmarks.
+struct MatchCoverage {
+  size_t expected = 0;
+  size_t matched = 0;
+};
+MatchCoverage MeasureMatchCoverage(const ViewGraph& graph, IndexT view_i, IndexT view_j, const Pose& pose_j,
+                                   const SubgraphSolution& k1, const std::map<ObservationKey, IndexT>& landmarks_k1,
+                                   const CameraIntrinsics& intrinsics_j, const EdgePlacementOptions& options);
+
 // Places view j of the edge (i, j) in k1's frame. `landmarks_k1` is
 // IndexLandmarksByObservation(k1) (built once per subgraph by the caller).
 EdgePlacement PlaceViewInSubgraph(const ViewGraph& graph, IndexT view_i, IndexT view_j,

@@ -46,6 +46,7 @@ const char* LinkDecisionName(LinkDecision decision) {
     case LinkDecision::kClosesCycle: return "closes_cycle";
     case LinkDecision::kBreaksCycle: return "breaks_cycle";
     case LinkDecision::kRedundantUnverified: return "redundant_unverified";
+    case LinkDecision::kKeptUnverified: return "kept_unverified";
   }
   return "unknown";
 }
@@ -75,7 +76,9 @@ TrustedForestResult SelectLinksByTrustedForest(const std::vector<SubgraphPairLin
     const bool verifiable = std::all_of(cycle_pairs.begin(), cycle_pairs.end(),
                                         [&](size_t q) { return pairs[q].has_transform; });
     if (!verifiable) {
-      result.decisions[p] = LinkDecision::kRedundantUnverified;
+      const bool vouched = pair.trust >= options.min_unverified_trust &&
+                           (pair.relative_coverage < 0.0 || pair.relative_coverage >= options.min_unverified_coverage);
+      result.decisions[p] = vouched ? LinkDecision::kKeptUnverified : LinkDecision::kRedundantUnverified;
       continue;
     }
     std::vector<Similarity3> to_previous;

@@ -16,8 +16,9 @@
 //   - a pair whose subgraphs are already connected closes a cycle with the forest path between
 //     them. With a transform, and transforms all along that path, the cycle is measured
 //     (MeasureSubgraphCycle: the triangle bounds widened by the paper's loop factor) and the pair
-//     is kept when it closes, cut when it breaks. Otherwise nothing can verify it and, being
-//     redundant, it is cut.
+//     is kept when it closes, cut when it breaks. Otherwise nothing can verify it: being redundant
+//     it is cut unless its own trust and its match coverage vouch for it (min_unverified_trust,
+//     min_unverified_coverage).
 // The forest never changes once built, so every pair is judged once against more trusted ones,
 // and no cut ever disconnects what the pairs connected.
 #pragma once
@@ -37,16 +38,20 @@ struct SubgraphPairLink {
   Similarity3 k2_to_k1;        // X_k1 = k2_to_k1(X_k2), when has_transform
   double trust = 0.0;
   size_t support = 0;  // edges the pair keeps; breaks ties of trust (more first)
+  double relative_coverage = -1.0;  // PairTrust::RelativeCoverageOf; negative: not measured
 };
 
 enum class LinkDecision {
   kForest,               // kept: joins two groups of subgraphs
   kClosesCycle,          // kept: its cycle with the forest closes
   kBreaksCycle,          // cut: its cycle with the forest does not close
-  kRedundantUnverified,  // cut: redundant, and no transform along its cycle to verify it with
+  kRedundantUnverified,  // cut: redundant, no transform along its cycle to verify it with, and its
+                         // trust below SubgraphLoopOptions::min_unverified_trust or its measured
+                         // coverage below min_unverified_coverage
+  kKeptUnverified,       // kept: redundant and unverifiable, but trusted that much
 };
 
-// "forest", "closes_cycle", "breaks_cycle", "redundant_unverified".
+// "forest", "closes_cycle", "breaks_cycle", "redundant_unverified", "kept_unverified".
 const char* LinkDecisionName(LinkDecision decision);
 
 struct TrustedForestResult {

@@ -65,12 +65,6 @@ struct PairVerdict {
   EdgeInvalidation invalidation;   // when cut
 };
 
-// The selected hypothesis of an aligned pair, nullptr otherwise.
-const AlignmentHypothesis* SelectedHypothesis(const SubgraphAlignmentResult& alignment) {
-  if (alignment.selected_hypothesis < 0) return nullptr;
-  return &alignment.hypotheses[static_cast<size_t>(alignment.selected_hypothesis)];
-}
-
 // Whether the pair's transform can take part in a loop: a transform no connecting edge agrees with
 // is no evidence (real street: two such pairs, fitted on samples of doppelgangers, closed a
 // triangle with each other).
@@ -114,7 +108,7 @@ std::vector<PairVerdict> VoteOnTriangles(const std::vector<std::pair<int, int>>&
 // Method::kTrustedForest over every connected pair (trusted_link_forest.hpp).
 std::vector<PairVerdict> JudgeAgainstTrustedForest(const std::vector<std::pair<int, int>>& pairs,
                                                    const std::vector<SubgraphAlignmentResult>& alignments,
-                                                   const std::vector<double>& trust,
+                                                   const std::vector<double>& trust, const std::vector<double>& coverage,
                                                    const std::vector<SubgraphFrame>& frames,
                                                    const SubgraphLoopOptions& options, ViewGraphPruningReport* out) {
   std::vector<SubgraphPairLink> links(pairs.size());
@@ -122,7 +116,7 @@ std::vector<PairVerdict> JudgeAgainstTrustedForest(const std::vector<std::pair<i
     const SubgraphAlignmentResult& alignment = alignments[p];
     const bool has_transform = HasUsableTransform(alignment);
     links[p] = {pairs[p].first, pairs[p].second, has_transform, alignment.k2_to_k1, trust[p],
-                has_transform ? alignment.consensus_size : alignment.edges.size()};
+                has_transform ? alignment.consensus_size : alignment.edges.size(), coverage[p]};
   }
   const TrustedForestResult forest = SelectLinksByTrustedForest(links, frames, options);
   out->cycles = forest.cycles;
@@ -133,10 +127,13 @@ std::vector<PairVerdict> JudgeAgainstTrustedForest(const std::vector<std::pair<i
     report.forest_decision = forest.decisions[p];
     switch (forest.decisions[p]) {
       case LinkDecision::kForest:
-        // Nothing says which edges of a pair without a transform are wrong, and the pair is needed.
-        verdicts[p].keep_all = !links[p].has_transform;
+        // Nothing says which edges of a pair without a transform are wrong, and the pair is needed
+        // (a rotation-only consensus did say, and keeps its decision).
+        verdicts[p].keep_all =
+            !links[p].has_transform && alignments[p].status != SubgraphAlignmentStatus::kRotationOnly;
         break;
       case LinkDecision::kClosesCycle:
+      case LinkDecision::kKeptUnverified:
         break;
       case LinkDecision::kBreaksCycle: {
         const SubgraphCycle& cycle = forest.cycles[static_cast<size_t>(forest.cycle_of[p])];
@@ -178,8 +175,6 @@ void PruneViewGraph(const ViewGraphPruningOptions& options, ViewGraph* graph, co
   // 2. Alignment of every connected pair of subgraphs (decisions only, the graph is unchanged).
   start = std::chrono::steady_clock::now();
   const std::vector<AcceptedSubgraph>& accepted = out.partition.accepted;
-  const PairTrust pair_trust(options.link_trust, component_graph, accepted);
-  out.reference_distinctive_share = pair_trust.ReferenceShare();
   const std::vector<std::pair<int, int>> pairs = ConnectedSubgraphPairs(*graph, accepted);
   std::vector<SubgraphAlignmentResult> alignments(pairs.size());
   ParallelFor(
@@ -188,32 +183,31 @@ void PruneViewGraph(const ViewGraphPruningOptions& options, ViewGraph* graph, co
         const SubgraphSolution& s1 = accepted[static_cast<size_t>(pairs[p].first)].solution;
         const SubgraphSolution& s2 = accepted[static_cast<size_t>(pairs[p].second)].solution;
         const size_t num_edges = ConnectingEdges(*graph, s1.view_ids, s2.view_ids).size();
-        SubgraphAlignmentOptions alignment = PairAlignmentOptions(options, num_edges);
-        if (alignment.hypothesis_selection == SubgraphAlignmentOptions::HypothesisSelection::kMostTrusted) {
-          alignment.candidate_trust = [&](const std::vector<ViewPair>& edges) { return pair_trust.Of(edges, nullptr); };
-        }
-        alignments[p] = AlignSubgraphPair(*graph, s1, s2, views_and_intrinsics, features, alignment);
+        alignments[p] = AlignSubgraphPair(*graph, s1, s2, views_and_intrinsics, features,
+                                          PairAlignmentOptions(options, num_edges));
       },
       progress, "inter-subgraph pruning");
 
   // 3. The loop check: a pair whose frame transform breaks the loops of subgraphs is cut whole.
+  const PairTrust pair_trust(options.link_trust, component_graph, accepted, views_and_intrinsics,
+                             options.alignment.placement);
+  out.reference_distinctive_share = pair_trust.ReferenceShare();
+  out.reference_coverage = pair_trust.ReferenceCoverage();
   std::vector<double> trust(pairs.size());
+  std::vector<double> coverage(pairs.size());
   for (size_t p = 0; p < pairs.size(); ++p) {
     // A pair without a usable transform keeps all its edges if kept at all: they are its evidence.
-    std::vector<ViewPair> edges;
-    for (const InterSubgraphEdgeDecision& decision : alignments[p].edges) {
-      if (decision.kept || !HasUsableTransform(alignments[p])) {
-        edges.push_back({decision.placement.view_i, decision.placement.view_j});
-      }
-    }
-    trust[p] = pair_trust.Of(edges, SelectedHypothesis(alignments[p]));
+    const bool all_edges =
+        !HasUsableTransform(alignments[p]) && alignments[p].status != SubgraphAlignmentStatus::kRotationOnly;
+    trust[p] = pair_trust.Of(alignments[p], all_edges);
+    coverage[p] = pair_trust.RelativeCoverageOf(alignments[p], all_edges);
   }
   std::vector<SubgraphFrame> frames;
   for (const AcceptedSubgraph& subgraph : accepted) frames.push_back(FrameOfSubgraph(subgraph.solution));
   out.pairs.resize(pairs.size());
   std::vector<PairVerdict> verdicts(pairs.size());
   if (options.loops.enabled && options.loops.method == SubgraphLoopOptions::Method::kTrustedForest) {
-    verdicts = JudgeAgainstTrustedForest(pairs, alignments, trust, frames, options.loops, &out);
+    verdicts = JudgeAgainstTrustedForest(pairs, alignments, trust, coverage, frames, options.loops, &out);
   } else {
     verdicts = VoteOnTriangles(pairs, alignments, trust, frames, options.loops, &out);
   }
@@ -244,6 +238,7 @@ void PruneViewGraph(const ViewGraphPruningOptions& options, ViewGraph* graph, co
     pair_report.has_frame_transform = alignment.has_frame_transform;
     pair_report.k2_to_k1 = alignment.k2_to_k1;
     pair_report.trust = trust[p];
+    pair_report.coverage = coverage[p];
     for (const InterSubgraphEdgeDecision& decision : alignment.edges) {
       if (decision.kept) continue;
       const EdgeInvalidation why =

@@ -78,6 +78,9 @@ struct SubgraphPairReport {
   // The pair's trust (link_trust over the edges its RANSAC kept, or all its edges when it has no
   // transform) and, under Method::kTrustedForest, what the forest decided.
   double trust = 0.0;
+  // Match coverage over the placed edges the trust was taken on, relative to the edges inside the
+  // subgraphs (PairTrust::RelativeCoverageOf); -1 when not measured.
+  double coverage = -1.0;
   bool judged_by_forest = false;
   LinkDecision forest_decision = LinkDecision::kForest;
 };
@@ -96,8 +99,10 @@ struct ViewGraphPruningReport {
   std::vector<RemovedEdge> removed_edges;  // pair order, then (i, j) order
   std::vector<SubgraphTriangle> triangles;  // loops of aligned pairs (subgraph_loop_consistency.hpp)
   std::vector<SubgraphCycle> cycles;        // longer cycles judged (subgraph_cycle_consistency.hpp)
-  // PairTrust::ReferenceShare (kDistinctiveShare only): the unit of the pairs' trust.
+  // PairTrust::ReferenceShare and ReferenceCoverage: the units of the pairs' trust (0 when the
+  // measure does not use them).
   double reference_distinctive_share = 0.0;
+  double reference_coverage = 0.0;
   size_t num_input_edges = 0;   // valid edges before pruning
   size_t num_output_edges = 0;  // valid edges after pruning
   std::vector<StageTiming> timings;  // "subgraph partition", "inter-subgraph pruning"

@@ -75,13 +75,11 @@ void AddPruningOptions(CLI::App* cmd, sfm_pruning::ViewGraphPruningOptions* opti
       ->capture_default_str();
   group->add_option("--prune_hypothesis_selection", alignment.hypothesis_selection,
                     "largest_consensus: the paper's vote; match_coverage: rule out RANSAC candidates whose "
-                    "edges miss the landmarks their placed views should see; most_trusted: the candidate "
-                    "whose edges --prune_link_trust ranks highest (docs/pruning.md)")
+                    "edges miss the landmarks their placed views should see (docs/pruning.md)")
       ->transform(CLI::CheckedTransformer(
           std::map<std::string, sfm_pruning::SubgraphAlignmentOptions::HypothesisSelection>{
               {"largest_consensus", sfm_pruning::SubgraphAlignmentOptions::HypothesisSelection::kLargestConsensus},
-              {"match_coverage", sfm_pruning::SubgraphAlignmentOptions::HypothesisSelection::kMatchCoverage},
-              {"most_trusted", sfm_pruning::SubgraphAlignmentOptions::HypothesisSelection::kMostTrusted}},
+              {"match_coverage", sfm_pruning::SubgraphAlignmentOptions::HypothesisSelection::kMatchCoverage}},
           CLI::ignore_case))
       ->default_str("match_coverage");
   group->add_option("--prune_coverage_break_even", alignment.coverage_break_even,
@@ -101,6 +99,15 @@ void AddPruningOptions(CLI::App* cmd, sfm_pruning::ViewGraphPruningOptions* opti
   group->add_option("--prune_max_translation_deviation", alignment.max_translation_deviation_fraction,
                     "E_t: translation deviation of an edge as a fraction of |mean t|")
       ->check(CLI::PositiveNumber)
+      ->capture_default_str();
+  group->add_option("--prune_min_edges_for_ransac", alignment.min_edges_for_ransac,
+                    "Subgraph pairs with fewer voting edges keep or lose them all (few-edges policy) instead of "
+                    "being aligned")
+      ->check(CLI::Range(2, 1000000))
+      ->capture_default_str();
+  group->add_option("--prune_rotation_only_fallback", alignment.rotation_only_fallback,
+                    "A pair without a supported hypothesis keeps only the largest set of edges that agree on "
+                    "the rotation between the subgraphs (false: all its voting edges, the paper)")
       ->capture_default_str();
   group->add_option("--prune_refine_rounds", alignment.refine_rounds,
                     "Refits of a RANSAC winner on its whole consensus (0: the paper's plain RANSAC)")
@@ -133,13 +140,24 @@ void AddPruningOptions(CLI::App* cmd, sfm_pruning::ViewGraphPruningOptions* opti
                                                                             {"trusted_forest", LoopMethod::kTrustedForest}},
                                           CLI::ignore_case))
       ->default_str("trusted_forest");
+  group->add_option("--prune_min_unverified_trust", loops.min_unverified_trust,
+                    "trusted_forest: a redundant subgraph pair that no cycle can verify is kept when its trust "
+                    "reaches this (1: as distinctive as the edges inside the subgraphs)")
+      ->check(CLI::NonNegativeNumber)
+      ->capture_default_str();
+  group->add_option("--prune_min_unverified_coverage", loops.min_unverified_coverage,
+                    "trusted_forest: such a pair must also reach this match coverage, relative to the edges "
+                    "inside the subgraphs (when it can be measured)")
+      ->check(CLI::NonNegativeNumber)
+      ->capture_default_str();
   using LinkTrust = sfm_pruning::PairTrustMeasure;
   group->add_option("--prune_link_trust", options->link_trust,
                     "What ranks subgraph pairs in the loop check: match_coverage, or distinctive (the mean "
                     "distinctiveness of the pair's inliers; repeated structure is matched by many views)")
-      ->transform(CLI::CheckedTransformer(std::map<std::string, LinkTrust>{{"match_coverage", LinkTrust::kMatchCoverage},
-                                                                           {"distinctive", LinkTrust::kDistinctiveShare}},
-                                          CLI::ignore_case))
+      ->transform(CLI::CheckedTransformer(
+          std::map<std::string, LinkTrust>{{"match_coverage", LinkTrust::kMatchCoverage},
+                                           {"distinctive", LinkTrust::kDistinctiveShare}},
+          CLI::ignore_case))
       ->default_str("distinctive");
   group->add_option("--prune_loop_max_cycle_length", loops.max_cycle_length,
                     "Longest cycle of subgraphs the second loop pass judges (below 4: off); on a broken "

@@ -54,8 +54,7 @@ nlohmann::json PruningReportJson(const sfm_pruning::ViewGraphPruningReport& prun
                             {"beta", h.beta},
                             {"expected_landmarks", h.expected_landmarks},
                             {"matched_landmarks", h.matched_landmarks},
-                            {"coverage_score", h.coverage_score},
-                            {"trust", h.trust}});
+                            {"coverage_score", h.coverage_score}});
     }
     pairs.push_back({{"hypotheses", std::move(hypotheses)},
                      {"selected_hypothesis", pair.selected_hypothesis},
@@ -70,7 +69,8 @@ nlohmann::json PruningReportJson(const sfm_pruning::ViewGraphPruningReport& prun
                      {"inconsistent_triangles", pair.inconsistent_triangles},
                      {"rejected_by_loops", pair.rejected_by_loops},
                      {"rejected_by_cycle", pair.rejected_by_cycle},
-                     {"trust", pair.trust}});
+                     {"trust", pair.trust},
+                     {"coverage", pair.coverage}});
     if (pair.judged_by_forest) pairs.back()["forest_decision"] = LinkDecisionName(pair.forest_decision);
     if (pair.has_frame_transform) {
       pairs.back()["frame_rotation_deg"] =
@@ -113,6 +113,7 @@ nlohmann::json PruningReportJson(const sfm_pruning::ViewGraphPruningReport& prun
           {"phases", std::move(phases)},
           {"total_seconds", pruning.total_seconds},
           {"reference_distinctive_share", pruning.reference_distinctive_share},
+          {"reference_coverage", pruning.reference_coverage},
           {"tree", std::move(nodes)},
           {"subgraph_pairs", std::move(pairs)},
           {"subgraph_triangles", std::move(triangles)},
