@@ -14,11 +14,11 @@ using testing::LoopScene;
 // A pair with the exact transform of `scene`, followed by `error` in k1's frame.
 SubgraphPairLink Pair(const LoopScene& scene, int k1, int k2, double trust, const Similarity3& error = {}) {
   const SubgraphLink link = scene.Link(k1, k2, 10, error, trust);
-  return {k1, k2, true, link.k2_to_k1, trust, 10};
+  return {k1, k2, true, link.k2_to_k1, trust, 10, -1.0, 10};
 }
 
 // A pair whose RANSAC gave no transform.
-SubgraphPairLink PairWithoutTransform(int k1, int k2, double trust) { return {k1, k2, false, {}, trust, 3}; }
+SubgraphPairLink PairWithoutTransform(int k1, int k2, double trust) { return {k1, k2, false, {}, trust, 3, -1.0, 3}; }
 
 // A street of eight subgraphs, 4 m apart along x, whose facades repeat every 16 m: the twin pairs
 // see subgraph k2 where k2 - 4 is (their transforms are shifted by one period in k1's frame), and
@@ -111,6 +111,25 @@ TEST(TrustedLinkForest, PairsWithoutTransformBridgeButNeverVerify) {
             LinkDecision::kRedundantUnverified);
   missing[5].relative_coverage = 0.9;
   EXPECT_EQ(SelectLinksByTrustedForest(missing, scene.subgraphs, lenient).decisions[5], LinkDecision::kKeptUnverified);
+}
+
+TEST(TrustedLinkForest, PairsOfFewEdgesComeAfterTheOthersWhateverTheirTrust) {
+  // castle-P19: a one-edge pair (no transform, trust 1.49) entered the forest first and left the
+  // cycle of a 16-edge true pair unverifiable, which was cut.
+  const LoopScene scene(4);
+  std::vector<SubgraphPairLink> pairs = {Pair(scene, 0, 1, 0.9), Pair(scene, 1, 2, 0.9),
+                                         PairWithoutTransform(2, 3, 1.5), Pair(scene, 0, 3, 0.6),
+                                         Pair(scene, 1, 3, 0.5)};
+  pairs[2].num_edges = 1;
+  TrustedForestResult result = SelectLinksByTrustedForest(pairs, scene.subgraphs, {});
+  EXPECT_EQ(result.decisions[3], LinkDecision::kForest);
+  EXPECT_EQ(result.decisions[4], LinkDecision::kClosesCycle);
+  EXPECT_EQ(result.decisions[2], LinkDecision::kKeptUnverified);  // redundant; its trust vouches
+  SubgraphLoopOptions by_trust_only;
+  by_trust_only.min_edges_for_trust = 0;
+  result = SelectLinksByTrustedForest(pairs, scene.subgraphs, by_trust_only);
+  EXPECT_EQ(result.decisions[2], LinkDecision::kForest);
+  EXPECT_EQ(result.decisions[3], LinkDecision::kRedundantUnverified);  // 0.6 < 0.65, nothing verifies it
 }
 
 TEST(TrustedLinkForest, LongCyclesGetThePapersLoopFactor) {

@@ -54,6 +54,9 @@ struct SubgraphLoopOptions {
   // subgraphs) reaches this, when measured. sequential_large@1000: twin pairs median 0.51 absolute,
   // true pairs p10 0.69 (inside: ~0.8).
   double min_unverified_coverage = 0.75;
+  // kTrustedForest: pairs of fewer connecting edges enter Kruskal's order after all the others (the
+  // inter-subgraph RANSAC's min_edges_for_ransac: below it a pair has no majority of its own).
+  size_t min_edges_for_trust = 3;
   // Measured on books (real images): the closing triangle turns by 1.6–3.1° and moves a's centre
   // by 0.08–0.15 of its side, the triangles through the doppelganger pair by 53–55° and 1.4–1.5.
   // The scale of a pair is the least certain part of its transform (it comes from the spread of

@@ -60,6 +60,9 @@ TrustedForestResult SelectLinksByTrustedForest(const std::vector<SubgraphPairLin
   std::vector<size_t> order(pairs.size());
   std::iota(order.begin(), order.end(), size_t{0});
   std::stable_sort(order.begin(), order.end(), [&](size_t a, size_t b) {
+    const bool a_enough = pairs[a].num_edges >= options.min_edges_for_trust;
+    const bool b_enough = pairs[b].num_edges >= options.min_edges_for_trust;
+    if (a_enough != b_enough) return a_enough;
     if (pairs[a].trust != pairs[b].trust) return pairs[a].trust > pairs[b].trust;
     return pairs[a].support > pairs[b].support;
   });

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <chrono>
+#include <cmath>
 #include <map>
 #include <set>
 #include <utility>
@@ -56,6 +57,13 @@ SubgraphFrame FrameOfSubgraph(const SubgraphSolution& solution) {
   return frame;
 }
 
+// A pair aligned with its second subgraph as the reference, turned round so that k2_to_k1 and beta
+// map the second into the first like every other pair's (the edge decisions name both views and
+// need nothing; mean_rotation / mean_translation stay the reference's chain).
+void ExpressFromTheFirstSubgraph(SubgraphAlignmentResult* alignment) {
+  if (alignment->has_frame_transform) alignment->k2_to_k1 = alignment->k2_to_k1.Inverse();
+  if (alignment->beta > 0.0) alignment->beta = 1.0 / alignment->beta;
+}
 
 // What the loop check decided for one pair of subgraphs.
 struct PairVerdict {
@@ -70,6 +78,26 @@ struct PairVerdict {
 // triangle with each other).
 bool HasUsableTransform(const SubgraphAlignmentResult& alignment) {
   return alignment.has_frame_transform && alignment.consensus_size > 0;
+}
+
+// A pair that nothing decided between its edges (no usable transform, no rotation-only consensus)
+// keeps all of them if it is kept at all: they are its evidence.
+bool KeepsAllIfKept(const SubgraphAlignmentResult& alignment) {
+  return !HasUsableTransform(alignment) && alignment.status != SubgraphAlignmentStatus::kRotationOnly;
+}
+
+// The measure that broke a cycle and its bound (SubgraphLoopOptions, widened by the loop factor):
+// the rotation in degrees if it failed, else the scale ratio, else the translation fraction.
+EdgeInvalidation CycleInvalidation(const SubgraphCycle& cycle, const SubgraphLoopOptions& options) {
+  const double factor = static_cast<double>(cycle.loop_factor);
+  const EdgeInvalidReason reason = EdgeInvalidReason::kSubgraphLoopInconsistent;
+  if (cycle.rotation_deg > options.max_rotation_deg * factor) {
+    return {reason, cycle.rotation_deg, options.max_rotation_deg * factor};
+  }
+  if (cycle.scale_ratio > std::pow(options.max_scale_ratio, factor)) {
+    return {reason, cycle.scale_ratio, std::pow(options.max_scale_ratio, factor)};
+  }
+  return {reason, cycle.translation_fraction, options.max_translation_fraction * factor};
 }
 
 // Method::kTriangleVote: the triangle vote, then the longer cycles, over the pairs with a usable
@@ -116,7 +144,8 @@ std::vector<PairVerdict> JudgeAgainstTrustedForest(const std::vector<std::pair<i
     const SubgraphAlignmentResult& alignment = alignments[p];
     const bool has_transform = HasUsableTransform(alignment);
     links[p] = {pairs[p].first, pairs[p].second, has_transform, alignment.k2_to_k1, trust[p],
-                has_transform ? alignment.consensus_size : alignment.edges.size(), coverage[p]};
+                has_transform ? alignment.consensus_size : alignment.edges.size(), coverage[p],
+                alignment.edges.size()};
   }
   const TrustedForestResult forest = SelectLinksByTrustedForest(links, frames, options);
   out->cycles = forest.cycles;
@@ -127,19 +156,15 @@ std::vector<PairVerdict> JudgeAgainstTrustedForest(const std::vector<std::pair<i
     report.forest_decision = forest.decisions[p];
     switch (forest.decisions[p]) {
       case LinkDecision::kForest:
-        // Nothing says which edges of a pair without a transform are wrong, and the pair is needed
-        // (a rotation-only consensus did say, and keeps its decision).
-        verdicts[p].keep_all =
-            !links[p].has_transform && alignments[p].status != SubgraphAlignmentStatus::kRotationOnly;
+        // Nothing says which edges of such a pair are wrong, and the pair is needed.
+        verdicts[p].keep_all = KeepsAllIfKept(alignments[p]);
         break;
       case LinkDecision::kClosesCycle:
       case LinkDecision::kKeptUnverified:
         break;
       case LinkDecision::kBreaksCycle: {
-        const SubgraphCycle& cycle = forest.cycles[static_cast<size_t>(forest.cycle_of[p])];
         verdicts[p].cut = true;
-        verdicts[p].invalidation = {EdgeInvalidReason::kSubgraphLoopInconsistent, cycle.rotation_deg,
-                                    options.max_rotation_deg * static_cast<double>(cycle.loop_factor)};
+        verdicts[p].invalidation = CycleInvalidation(forest.cycles[static_cast<size_t>(forest.cycle_of[p])], options);
         report.rejected_by_loops = true;
         report.rejected_by_cycle = forest.cycle_of[p];
         break;
@@ -183,8 +208,16 @@ void PruneViewGraph(const ViewGraphPruningOptions& options, ViewGraph* graph, co
         const SubgraphSolution& s1 = accepted[static_cast<size_t>(pairs[p].first)].solution;
         const SubgraphSolution& s2 = accepted[static_cast<size_t>(pairs[p].second)].solution;
         const size_t num_edges = ConnectingEdges(*graph, s1.view_ids, s2.view_ids).size();
-        alignments[p] = AlignSubgraphPair(*graph, s1, s2, views_and_intrinsics, features,
-                                          PairAlignmentOptions(options, num_edges));
+        // The subgraph with more points places the other's views: a tiny subgraph of two views may
+        // have none, and then no edge of the pair could vote.
+        if (s2.landmarks.size() > s1.landmarks.size()) {
+          alignments[p] = AlignSubgraphPair(*graph, s2, s1, views_and_intrinsics, features,
+                                            PairAlignmentOptions(options, num_edges));
+          ExpressFromTheFirstSubgraph(&alignments[p]);
+        } else {
+          alignments[p] = AlignSubgraphPair(*graph, s1, s2, views_and_intrinsics, features,
+                                            PairAlignmentOptions(options, num_edges));
+        }
       },
       progress, "inter-subgraph pruning");
 
@@ -196,9 +229,7 @@ void PruneViewGraph(const ViewGraphPruningOptions& options, ViewGraph* graph, co
   std::vector<double> trust(pairs.size());
   std::vector<double> coverage(pairs.size());
   for (size_t p = 0; p < pairs.size(); ++p) {
-    // A pair without a usable transform keeps all its edges if kept at all: they are its evidence.
-    const bool all_edges =
-        !HasUsableTransform(alignments[p]) && alignments[p].status != SubgraphAlignmentStatus::kRotationOnly;
+    const bool all_edges = KeepsAllIfKept(alignments[p]);
     trust[p] = pair_trust.Of(alignments[p], all_edges);
     coverage[p] = pair_trust.RelativeCoverageOf(alignments[p], all_edges);
   }

@@ -20,6 +20,8 @@ enum class EdgeInvalidReason {
   kRotationResidual,           // value: deg between R_ij and the averaged rotations
   kInterSubgraphInconsistent,  // value: deg (or relative translation error) of the RANSAC vote
   kSubgraphLoopInconsistent,   // value: inconsistent subgraph loops of its pair, threshold: consistent ones
+                               // (triangle vote); or the measure that broke its cycle and its bound
+                               // (trusted forest: degrees, scale ratio or translation fraction)
   kUnverifiedSubgraphPair,     // value: trust of its pair, threshold: 0 (redundant, no transform to verify it)
   kOther,                      // any other stage; value is stage-defined
 };

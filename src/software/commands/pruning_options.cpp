@@ -150,6 +150,9 @@ void AddPruningOptions(CLI::App* cmd, sfm_pruning::ViewGraphPruningOptions* opti
                     "inside the subgraphs (when it can be measured)")
       ->check(CLI::NonNegativeNumber)
       ->capture_default_str();
+  group->add_option("--prune_min_edges_for_trust", loops.min_edges_for_trust,
+                    "trusted_forest: subgraph pairs of fewer connecting edges are ranked after all the others")
+      ->capture_default_str();
   using LinkTrust = sfm_pruning::PairTrustMeasure;
   group->add_option("--prune_link_trust", options->link_trust,
                     "What ranks subgraph pairs in the loop check: match_coverage, or distinctive (the mean "
