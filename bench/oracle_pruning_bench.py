@@ -6,8 +6,9 @@ For each scene, the synthetic ground truth says how many of a pair's putative ma
 twin (different copies of one texture: false but consistent with one wrong motion) or random
 (synthetic_scene.json). The oracle deletes from a copy of the scene's database every pair whose
 twin matches outnumber its true ones (or, with --twin_ratio R, exceed R times them), then runs
-GLOBAL (`prunesfm run`) and COLMAP 3.8's mapper (after its `exhaustive_matcher` verification) on
-the rest. A scene the oracle cannot recover is out of reach of pruning edges: its true pairs
+GLOBAL (`prunesfm run`) and COLMAP 3.8's mapper on the rest (COLMAP's `exhaustive_matcher` verifies
+the full database first, since it would match a missing pair again, and the pairs are deleted from
+its matches and two-view geometries after). A scene the oracle cannot recover is out of reach of pruning edges: its true pairs
 carry twin matches too, or deleting the twin pairs disconnects it. GLOBAL and GLOBAL_PRUNED on
 the full database are the comparison rows.
 
@@ -42,17 +43,19 @@ def twin_dominated_pairs(scene_json, ratio):
     return {(p["i"], p["j"]) for p in stats if p["twin"] > ratio * p["true"]}, len(stats)
 
 
-def delete_pairs(database, pairs):
-    """Deletes the putative matches of `pairs` (view indices = the number in view_NNNNN.jpg)."""
+def delete_pairs(database, pairs, tables=("matches",)):
+    """Deletes the rows of `pairs` (view indices = the number in view_NNNNN.jpg) from `tables`; returns
+    how many pairs had rows in the first of them."""
     db = sqlite3.connect(database)
     view_of = {image_id: int(Path(name).stem.split("_")[-1]) for image_id, name in db.execute(
         "SELECT image_id, name FROM images")}
     deleted = 0
-    for (pair_id,) in list(db.execute("SELECT pair_id FROM matches")):
+    for (pair_id,) in list(db.execute(f"SELECT pair_id FROM {tables[0]}")):
         a, b = divmod(pair_id, COLMAP_PAIR_ID_FACTOR)
         views = tuple(sorted((view_of[a], view_of[b])))
         if views in pairs:
-            db.execute("DELETE FROM matches WHERE pair_id = ?", (pair_id,))
+            for table in tables:
+                db.execute(f"DELETE FROM {table} WHERE pair_id = ?", (pair_id,))
             deleted += 1
     db.commit()
     db.close()
@@ -67,10 +70,14 @@ def run_ours(args, prunesfm, database, gt, out, engine):
     return bs.evaluate_against(prunesfm, model, gt, out, args.seed, args.timeout)
 
 
-def run_colmap(args, prunesfm, database, gt, out):
+def run_colmap(args, prunesfm, database, pairs, gt, out):
+    """COLMAP's exhaustive_matcher verifies the full database (it would match again any pair whose
+    matches are missing, undoing the oracle), then the oracle's pairs are deleted from its matches and
+    two-view geometries, then the mapper."""
     t = str(args.threads)
     rb.run_stage("match", [args.colmap, "exhaustive_matcher", "--database_path", database, "--SiftMatching.use_gpu", "0",
                            "--SiftMatching.num_threads", t], out / "match.log", args.timeout, rb.colmap_env())
+    delete_pairs(database, pairs, ("two_view_geometries", "matches"))
     (out / "images").mkdir(parents=True, exist_ok=True)
     _, model = bs.colmap_mapper(args.colmap, database, out / "images", out, t, args.timeout, True)
     return bs.evaluate_against(prunesfm, model, gt, out, args.seed, args.timeout)
@@ -115,8 +122,8 @@ def main():
         row["oracle GLOBAL"] = run_ours(args, prunesfm, oracle_db, gt, work / "oracle_global", "GLOBAL")
         if args.colmap:
             colmap_db = work / "oracle_colmap.db"
-            rb.copy_database(oracle_db, colmap_db)
-            row["oracle colmap"] = run_colmap(args, prunesfm, colmap_db, gt, work / "oracle_colmap")
+            rb.copy_database(synth / "database.db", colmap_db)
+            row["oracle colmap"] = run_colmap(args, prunesfm, colmap_db, pairs, gt, work / "oracle_colmap")
         results[label] = row
 
         def cell(r):
