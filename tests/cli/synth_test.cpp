@@ -1,6 +1,12 @@
 // prunesfm synth: the written project reads back as the scene the library generates.
 #include <gtest/gtest.h>
 
+#include <map>
+#include <sstream>
+#include <string>
+#include <utility>
+#include <vector>
+
 #include "run_prunesfm.hpp"
 #include "sfm_pruning/eval/synthetic_scene.hpp"
 #include "sfm_pruning/io/colmap_database.hpp"
@@ -56,12 +62,61 @@ TEST(CliSynth, WritesAProjectThatReadsBackAsTheScene) {
   }
 }
 
+// feature_landmarks.txt: "view_id num_features" then "landmark appearance" per feature (-1 -1: clutter).
+std::map<IndexT, std::vector<std::pair<long, long>>> ReadFeatureLandmarks(const std::filesystem::path& path) {
+  std::map<IndexT, std::vector<std::pair<long, long>>> result;
+  std::istringstream in(ReadFileToString(path));
+  std::string line;
+  while (std::getline(in, line)) {
+    if (line.empty() || line[0] == '#') continue;
+    std::istringstream fields(line);
+    IndexT view_id = 0;
+    size_t count = 0;
+    fields >> view_id >> count;
+    auto& features = result[view_id];
+    features.resize(count);
+    for (auto& [landmark, appearance] : features) fields >> landmark >> appearance;
+    EXPECT_TRUE(fields) << "view " << view_id;
+  }
+  return result;
+}
+
+TEST(CliSynth, FeatureLandmarksLabelEveryMatchAsTheSceneCountsThem) {
+  const std::filesystem::path dir = ScratchDir("cli_synth_labels") / "scene";
+  ASSERT_EQ(RunSynth(dir).exit_code, 0);
+  const SyntheticScene scene = GenerateSyntheticScene(CliOptions());
+  const auto features = ReadFeatureLandmarks(dir / "ground_truth" / "feature_landmarks.txt");
+  ASSERT_EQ(features.size(), scene.features.size());
+  size_t num_twin = 0;
+  for (const auto& [pair, matches] : scene.putative_matches) {
+    PairMatchStats counted;
+    for (const FeatureMatch& match : matches) {
+      const auto [landmark_a, appearance_a] = features.at(pair.first).at(match.i);
+      const auto [landmark_b, appearance_b] = features.at(pair.second).at(match.j);
+      if (landmark_a >= 0 && landmark_a == landmark_b) {
+        ++counted.num_true;
+      } else if (landmark_a >= 0 && landmark_b >= 0 && appearance_a == appearance_b) {
+        ++counted.num_twin;
+      } else {
+        ++counted.num_random;
+      }
+    }
+    const PairMatchStats& expected = scene.pair_stats.at(pair);
+    EXPECT_EQ(counted.num_true, expected.num_true) << pair.first << "-" << pair.second;
+    EXPECT_EQ(counted.num_twin, expected.num_twin) << pair.first << "-" << pair.second;
+    EXPECT_EQ(counted.num_random, expected.num_random) << pair.first << "-" << pair.second;
+    num_twin += counted.num_twin;
+  }
+  EXPECT_GT(num_twin, 0u);  // the street has twins: the labels are not all "true"
+}
+
 TEST(CliSynth, SameSeedWritesIdenticalFiles) {
   const std::filesystem::path a = ScratchDir("cli_synth_a") / "scene", b = ScratchDir("cli_synth_b") / "scene";
   ASSERT_EQ(RunSynth(a).exit_code, 0);
   ASSERT_EQ(RunSynth(b).exit_code, 0);
   for (const char* file : {"sfm_data.json", "matches/matches.putative.bin", "matches/view_00003.desc",
-                           "matches/view_00003.feat", "ground_truth/sfm_data.json", "ground_truth/gt_cameras.txt"}) {
+                           "matches/view_00003.feat", "ground_truth/sfm_data.json", "ground_truth/gt_cameras.txt",
+                           "ground_truth/feature_landmarks.txt"}) {
     EXPECT_EQ(ReadFileToString(a / file), ReadFileToString(b / file)) << file;
   }
 }

@@ -8,6 +8,8 @@
 //   DIR/ground_truth/sfm_data.json        the full ground-truth model (poses, landmarks)
 //   DIR/ground_truth/gt_cameras.txt       the datasets' ground-truth camera list
 //   DIR/ground_truth/synthetic_scene.json options, twins and true/false matches per pair
+//   DIR/ground_truth/feature_landmarks.txt per feature: the landmark it observes and that
+//                                         landmark's appearance, so any match can be labelled
 // The directory is written atomically: it appears complete or not at all.
 #include <CLI/CLI.hpp>
 
@@ -77,6 +79,28 @@ nlohmann::json SceneSummary(const SyntheticScene& scene) {
   return json;
 }
 
+// One line per view: "view_id num_features" then, per feature in id order, "landmark appearance"
+// (-1 -1 for clutter). Two features of one landmark make a true match, of two landmarks with one
+// appearance a twin match (copies of one texture), anything else a random one: what
+// synthetic_scene.json counts per pair, here for every match (benchmarks delete the twins).
+void WriteFeatureLandmarks(const SyntheticScene& scene, const fs::path& path) {
+  sfm_pruning::WriteFileAtomically(path, false, [&](std::ostream& out) {
+    out << "# prunesfm synth: per view, view_id num_features, then landmark_id appearance_id of each feature "
+           "(-1 -1: clutter)\n";
+    for (const auto& [view_id, landmarks] : scene.feature_landmarks) {
+      out << view_id << ' ' << landmarks.size();
+      for (const sfm_pruning::IndexT landmark : landmarks) {
+        if (landmark == sfm_pruning::kUndefinedIndex) {
+          out << " -1 -1";
+        } else {
+          out << ' ' << landmark << ' ' << scene.landmark_appearance.at(landmark);
+        }
+      }
+      out << '\n';
+    }
+  });
+}
+
 void WriteScene(const SyntheticScene& scene, const fs::path& dir) {
   const sfm_pruning::SfmData& truth = scene.ground_truth;
   sfm_pruning::SfmData listing;  // what an image listing knows: images and calibration
@@ -103,6 +127,7 @@ void WriteScene(const SyntheticScene& scene, const fs::path& dir) {
   sfm_pruning::WriteGroundTruthCameras(truth, truth_dir / "gt_cameras.txt");
   sfm_pruning::WriteFileAtomically(truth_dir / "synthetic_scene.json", false,
                                    [&](std::ostream& out) { out << SceneSummary(scene).dump(2) << '\n'; });
+  WriteFeatureLandmarks(scene, truth_dir / "feature_landmarks.txt");
 }
 
 }  // namespace
