@@ -5,13 +5,6 @@
 namespace sfm_pruning {
 namespace {
 
-const CameraIntrinsics* FindIntrinsics(const SfmData& views_and_intrinsics, IndexT view_id) {
-  const auto view = views_and_intrinsics.views.find(view_id);
-  if (view == views_and_intrinsics.views.end()) return nullptr;
-  const auto intrinsics = views_and_intrinsics.intrinsics.find(view->second.id_intrinsic);
-  return intrinsics == views_and_intrinsics.intrinsics.end() ? nullptr : &intrinsics->second;
-}
-
 // Σ matched / Σ expected over every edge inside a subgraph with both views posed there, each edge
 // measured both ways with the subgraph's own poses; 0 when nothing is expected anywhere.
 double InsideMatchCoverage(const ViewGraph& graph, const std::vector<AcceptedSubgraph>& accepted,
@@ -24,7 +17,7 @@ double InsideMatchCoverage(const ViewGraph& graph, const std::vector<AcceptedSub
     for (const auto& [view_a, pose_a] : solution.poses) {
       for (const auto& [view_b, pose_b] : solution.poses) {
         if (view_a == view_b || !graph.HasValidEdge(view_a, view_b)) continue;
-        const CameraIntrinsics* intrinsics_b = FindIntrinsics(views_and_intrinsics, view_b);
+        const CameraIntrinsics* intrinsics_b = views_and_intrinsics.FindIntrinsics(view_b);
         if (intrinsics_b == nullptr) continue;
         const MatchCoverage coverage =
             MeasureMatchCoverage(graph, view_a, view_b, pose_b, solution, landmarks, *intrinsics_b, placement);

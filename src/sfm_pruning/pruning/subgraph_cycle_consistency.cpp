@@ -87,6 +87,12 @@ std::pair<std::vector<int>, std::vector<size_t>> ForestPath(const ForestAdjacenc
   return {nodes, path_links};
 }
 
+CycleBounds WidenedCycleBounds(size_t loop_factor, const SubgraphLoopOptions& options) {
+  const double factor = static_cast<double>(loop_factor);
+  return {options.max_rotation_deg * factor, std::pow(options.max_scale_ratio, factor),
+          options.max_translation_fraction * factor};
+}
+
 SubgraphCycle MeasureSubgraphCycle(const std::vector<int>& subgraphs, const std::vector<Similarity3>& to_previous,
                                    const std::vector<SubgraphFrame>& frames, const SubgraphLoopOptions& options) {
   SubgraphCycle cycle;
@@ -108,10 +114,9 @@ SubgraphCycle MeasureSubgraphCycle(const std::vector<int>& subgraphs, const std:
   const double displacement = (accumulated.Apply(first.centre) - first.centre).norm();
   cycle.translation_fraction = reference > 0.0 ? displacement / reference : 0.0;
   cycle.loop_factor = std::max<size_t>(1, (length - 1) / 2);
-  const double factor = static_cast<double>(cycle.loop_factor);
-  cycle.consistent = cycle.rotation_deg <= options.max_rotation_deg * factor &&
-                     cycle.scale_ratio <= std::pow(options.max_scale_ratio, factor) &&
-                     cycle.translation_fraction <= options.max_translation_fraction * factor;
+  const CycleBounds bounds = WidenedCycleBounds(cycle.loop_factor, options);
+  cycle.consistent = cycle.rotation_deg <= bounds.rotation_deg && cycle.scale_ratio <= bounds.scale_ratio &&
+                     cycle.translation_fraction <= bounds.translation_fraction;
   return cycle;
 }
 

@@ -40,6 +40,15 @@ using ForestAdjacency = std::vector<std::vector<std::pair<int, size_t>>>;
 // the links along it.
 std::pair<std::vector<int>, std::vector<size_t>> ForestPath(const ForestAdjacency& forest, int from, int to);
 
+// The triangle bounds widened by a cycle's loop factor: rotation and translation fraction
+// multiplied by it, scale ratio raised to it.
+struct CycleBounds {
+  double rotation_deg = 0.0;
+  double scale_ratio = 1.0;
+  double translation_fraction = 0.0;
+};
+CycleBounds WidenedCycleBounds(size_t loop_factor, const SubgraphLoopOptions& options);
+
 // The loop of a cycle c0 -> c1 -> ... -> c(l-1) -> c0 of subgraphs; `to_previous[k]` is the
 // transform from c(k+1)'s frame into c(k)'s (the last one from c0's into c(l-1)'s).
 SubgraphCycle MeasureSubgraphCycle(const std::vector<int>& subgraphs, const std::vector<Similarity3>& to_previous,

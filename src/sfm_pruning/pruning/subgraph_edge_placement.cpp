@@ -78,18 +78,16 @@ EdgePlacement PlaceViewInSubgraph(const ViewGraph& graph, IndexT view_i, IndexT 
   EdgePlacement placement;
   placement.view_i = view_i;
   placement.view_j = view_j;
-  const auto view = views_and_intrinsics.views.find(view_j);
+  const CameraIntrinsics* intrinsics = views_and_intrinsics.FindIntrinsics(view_j);
   const auto features_j = features.find(view_j);
-  if (view == views_and_intrinsics.views.end() || features_j == features.end()) return placement;
-  const auto intrinsics = views_and_intrinsics.intrinsics.find(view->second.id_intrinsic);
-  if (intrinsics == views_and_intrinsics.intrinsics.end()) return placement;
+  if (intrinsics == nullptr || features_j == features.end()) return placement;
 
   std::vector<Eigen::Vector3d> bearings;
   std::vector<Eigen::Vector3d> points;
   for (const FeatureMatch& match : graph.OrientedMatches(view_i, view_j)) {
     const auto landmark = landmarks_k1.find({view_i, match.i});
     if (landmark == landmarks_k1.end() || match.j >= features_j->second.size()) continue;
-    bearings.push_back(intrinsics->second.Unproject(features_j->second.Position(match.j)));
+    bearings.push_back(intrinsics->Unproject(features_j->second.Position(match.j)));
     points.push_back(k1.landmarks.at(landmark->second).X);
   }
   placement.num_correspondences = points.size();
@@ -99,7 +97,7 @@ EdgePlacement PlaceViewInSubgraph(const ViewGraph& graph, IndexT view_i, IndexT 
   }
 
   AbsolutePoseOptions pnp = options.pnp;
-  if (pnp.max_reprojection_error_px > 0.0) pnp.focal_length_px = intrinsics->second.FocalLength();
+  if (pnp.max_reprojection_error_px > 0.0) pnp.focal_length_px = intrinsics->FocalLength();
   pnp.ransac.seed = options.pnp.ransac.seed ^ ((static_cast<uint64_t>(view_i) << 32) | view_j);
   const AbsolutePoseResult pose = EstimateAbsolutePose(bearings, points, pnp);
   placement.num_pnp_inliers = pose.num_inliers;
@@ -110,7 +108,7 @@ EdgePlacement PlaceViewInSubgraph(const ViewGraph& graph, IndexT view_i, IndexT 
   placement.status = EdgePlacementStatus::kPlaced;
   placement.pose_j_in_k1 = pose.pose;
   const MatchCoverage coverage = MeasureMatchCoverage(graph, view_i, view_j, placement.pose_j_in_k1, k1, landmarks_k1,
-                                                      intrinsics->second, options);
+                                                      *intrinsics, options);
   placement.num_expected_landmarks = coverage.expected;
   placement.num_matched_landmarks = coverage.matched;
   return placement;

@@ -2,11 +2,11 @@
 
 #include <algorithm>
 #include <chrono>
-#include <cmath>
 #include <map>
 #include <set>
 #include <utility>
 
+#include "sfm_pruning/pruning/subgraph_cycle_consistency.hpp"
 #include "sfm_pruning/util/parallel_for.hpp"
 #include "sfm_pruning/util/statistics.hpp"
 #include "sfm_pruning/view_graph/components.hpp"
@@ -89,15 +89,11 @@ bool KeepsAllIfKept(const SubgraphAlignmentResult& alignment) {
 // The measure that broke a cycle and its bound (SubgraphLoopOptions, widened by the loop factor):
 // the rotation in degrees if it failed, else the scale ratio, else the translation fraction.
 EdgeInvalidation CycleInvalidation(const SubgraphCycle& cycle, const SubgraphLoopOptions& options) {
-  const double factor = static_cast<double>(cycle.loop_factor);
+  const CycleBounds bounds = WidenedCycleBounds(cycle.loop_factor, options);
   const EdgeInvalidReason reason = EdgeInvalidReason::kSubgraphLoopInconsistent;
-  if (cycle.rotation_deg > options.max_rotation_deg * factor) {
-    return {reason, cycle.rotation_deg, options.max_rotation_deg * factor};
-  }
-  if (cycle.scale_ratio > std::pow(options.max_scale_ratio, factor)) {
-    return {reason, cycle.scale_ratio, std::pow(options.max_scale_ratio, factor)};
-  }
-  return {reason, cycle.translation_fraction, options.max_translation_fraction * factor};
+  if (cycle.rotation_deg > bounds.rotation_deg) return {reason, cycle.rotation_deg, bounds.rotation_deg};
+  if (cycle.scale_ratio > bounds.scale_ratio) return {reason, cycle.scale_ratio, bounds.scale_ratio};
+  return {reason, cycle.translation_fraction, bounds.translation_fraction};
 }
 
 // Method::kTriangleVote: the triangle vote, then the longer cycles, over the pairs with a usable
@@ -210,14 +206,10 @@ void PruneViewGraph(const ViewGraphPruningOptions& options, ViewGraph* graph, co
         const size_t num_edges = ConnectingEdges(*graph, s1.view_ids, s2.view_ids).size();
         // The subgraph with more points places the other's views: a tiny subgraph of two views may
         // have none, and then no edge of the pair could vote.
-        if (s2.landmarks.size() > s1.landmarks.size()) {
-          alignments[p] = AlignSubgraphPair(*graph, s2, s1, views_and_intrinsics, features,
-                                            PairAlignmentOptions(options, num_edges));
-          ExpressFromTheFirstSubgraph(&alignments[p]);
-        } else {
-          alignments[p] = AlignSubgraphPair(*graph, s1, s2, views_and_intrinsics, features,
-                                            PairAlignmentOptions(options, num_edges));
-        }
+        const bool second_places = s2.landmarks.size() > s1.landmarks.size();
+        alignments[p] = AlignSubgraphPair(*graph, second_places ? s2 : s1, second_places ? s1 : s2,
+                                          views_and_intrinsics, features, PairAlignmentOptions(options, num_edges));
+        if (second_places) ExpressFromTheFirstSubgraph(&alignments[p]);
       },
       progress, "inter-subgraph pruning");
 

@@ -11,6 +11,13 @@ bool SfmData::IsPosed(const View& view) const {
   return poses.count(view.id_pose) != 0 && intrinsics.count(view.id_intrinsic) != 0;
 }
 
+const CameraIntrinsics* SfmData::FindIntrinsics(IndexT view_id) const {
+  const auto view = views.find(view_id);
+  if (view == views.end()) return nullptr;
+  const auto it = intrinsics.find(view->second.id_intrinsic);
+  return it == intrinsics.end() ? nullptr : &it->second;
+}
+
 bool SfmData::IsPosed(IndexT view_id) const {
   const auto it = views.find(view_id);
   return it != views.end() && IsPosed(it->second);

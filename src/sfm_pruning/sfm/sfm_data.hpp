@@ -27,6 +27,8 @@ struct SfmData {
   bool IsPosed(const View& view) const;
   const Pose& PoseOf(const View& view) const { return poses.at(view.id_pose); }
   const CameraIntrinsics& IntrinsicsOf(const View& view) const { return intrinsics.at(view.id_intrinsic); }
+  // The intrinsics of view `view_id`; nullptr for an unknown view or one without intrinsics.
+  const CameraIntrinsics* FindIntrinsics(IndexT view_id) const;
   std::vector<IndexT> PosedViewIds() const;
 
   bool operator==(const SfmData& o) const {
