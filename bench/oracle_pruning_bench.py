@@ -22,6 +22,7 @@ script's work folder. Python 3 standard library only.
 
 import array
 import json
+import random
 import shlex
 import shutil
 import sqlite3
@@ -78,9 +79,11 @@ def read_feature_landmarks(path):
     return result
 
 
-def delete_twin_matches(database, features):
+def delete_twin_matches(database, features, keep_fraction=0.0, seed=0):
     """Removes from every pair's putative matches those between two copies of one texture (different
-    landmarks, one appearance); returns (twin matches deleted, matches before)."""
+    landmarks, one appearance), each but a random `keep_fraction` of them (random.Random(seed));
+    returns (twin matches deleted, matches before)."""
+    rng = random.Random(seed)
     db = sqlite3.connect(database)
     view_of = {image_id: int(Path(name).stem.split("_")[-1]) for image_id, name in db.execute(
         "SELECT image_id, name FROM images")}
@@ -92,7 +95,7 @@ def delete_twin_matches(database, features):
         kept = array.array("I")
         for k in range(rows):
             (la, aa), (lb, ab) = labels_a[pairs[cols * k]], labels_b[pairs[cols * k + 1]]
-            if la >= 0 and lb >= 0 and la != lb and aa == ab:
+            if la >= 0 and lb >= 0 and la != lb and aa == ab and rng.random() >= keep_fraction:
                 continue
             kept.extend(pairs[cols * k:cols * k + cols])
         total += rows

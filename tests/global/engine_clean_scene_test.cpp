@@ -26,14 +26,27 @@ TEST(EngineCleanScene, RegistersEveryViewAccurately) {
   EXPECT_EQ(run.engine.timings.back().stage, "bundle adjustment");
 }
 
-TEST(EngineCleanScene, TranslationAveragingAlsoRegistersEveryView) {
+// A non-default positioning still registers every view of the clean scene accurately.
+void ExpectEveryViewRegisteredAccurately(const GlobalEngineOptions& options) {
   const SyntheticScene& scene = CleanScene();
-  GlobalEngineOptions options;
-  options.positioning = PositioningMethod::kTranslationAveraging;
   const EngineRun run = RunEngineOn(scene, scene.putative_matches, {}, options);
   ASSERT_TRUE(run.engine.success) << run.engine.message;
   EXPECT_EQ(run.engine.num_registered_views, scene.ground_truth.views.size());
+  // The structure comes from the union-find tracks whatever the positioning solved with.
+  EXPECT_GT(run.engine.num_landmarks, 500u);
   EXPECT_GE(AucAt(EvaluateModel(run.model, scene.ground_truth), 3.0), 97.0);
+}
+
+TEST(EngineCleanScene, TranslationAveragingAlsoRegistersEveryView) {
+  GlobalEngineOptions options;
+  options.positioning = PositioningMethod::kTranslationAveraging;
+  ExpectEveryViewRegisteredAccurately(options);
+}
+
+TEST(EngineCleanScene, MatchStarPositioningAlsoRegistersEveryView) {
+  GlobalEngineOptions options;
+  options.positioning_tracks = PositioningTracks::kMatchStars;
+  ExpectEveryViewRegisteredAccurately(options);
 }
 
 TEST(EngineCleanScene, IterationCapBindsOnlyTheAdjustmentsBeforeTheLast) {

@@ -77,11 +77,9 @@ bool RunStages(const GlobalEngineOptions& options, const ViewGraph& graph, const
 
   // 2. Tracks.
   TrackBuildingResult tracks;
-  Timed("tracks", report, [&]() {
-    TrackBuildingOptions track_options = options.tracks;
-    if (estimated.size() <= 3) track_options.min_track_length = std::min<size_t>(track_options.min_track_length, 2);
-    tracks = BuildTracks(kept, track_options);
-  });
+  TrackBuildingOptions track_options = options.tracks;
+  if (estimated.size() <= 3) track_options.min_track_length = std::min<size_t>(track_options.min_track_length, 2);
+  Timed("tracks", report, [&]() { tracks = BuildTracks(kept, track_options); });
   report->num_tracks = tracks.tracks.size();
   report->track_counts = tracks;
   report->track_counts.tracks.clear();
@@ -97,7 +95,12 @@ bool RunStages(const GlobalEngineOptions& options, const ViewGraph& graph, const
       positioning.solver.max_num_iterations = options.positioning_max_num_iterations;
       positioning.solver.max_num_resolve_iterations = options.positioning_max_num_resolve_iterations;
       positioning.solver.progress = progress;
-      report->positioning = PositionCamerasAndPoints(positioning, rotations, tracks.tracks, features, out);
+      if (options.positioning_tracks == PositioningTracks::kMatchStars) {
+        const std::vector<Track> stars = BuildMatchStarTracks(kept, track_options.min_track_length);
+        report->positioning = PositionCamerasAndPoints(positioning, rotations, tracks.tracks, features, out, &stars);
+      } else {
+        report->positioning = PositionCamerasAndPoints(positioning, rotations, tracks.tracks, features, out);
+      }
     } else {
       TranslationAveragingOptions averaging = options.translation_averaging;
       averaging.solver.seed = options.seed;

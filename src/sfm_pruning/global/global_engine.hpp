@@ -19,6 +19,7 @@
 
 #include "sfm_pruning/global/bundle_adjustment.hpp"
 #include "sfm_pruning/global/global_positioning.hpp"
+#include "sfm_pruning/global/match_star_tracks.hpp"
 #include "sfm_pruning/global/retriangulation.hpp"
 #include "sfm_pruning/global/rotation_averaging.hpp"
 #include "sfm_pruning/global/structure_filtering.hpp"
@@ -38,12 +39,20 @@ enum class PositioningMethod {
   kTranslationAveraging,  // camera centres from the edge directions, then points
 };
 
+// The tracks global positioning solves with (the structure always comes from the union-find tracks).
+enum class PositioningTracks {
+  kConnected,   // the union-find tracks (tracks.hpp), as GLOMAP (default)
+  kMatchStars,  // one star per feature and its direct matches (match_star_tracks.hpp): a wrong
+                // match between copies of a repeated texture misplaces one observation, not a track
+};
+
 struct GlobalEngineOptions {
   RotationAveragingOptions rotation;  // max_relative_rotation_error_deg = 10
   // min_track_length = 3, lowered to 2 when the rotation averaging keeps at most 3 views.
   TrackBuildingOptions tracks;
   PositioningMethod positioning = PositioningMethod::kGlobalPositioning;
   GlobalPositioningOptions global_positioning;
+  PositioningTracks positioning_tracks = PositioningTracks::kConnected;  // global positioning only
   TranslationAveragingOptions translation_averaging;
   // Intrinsics held constant by default (refine_focal / refine_principal_point available).
   BundleAdjustmentOptions bundle;

@@ -46,11 +46,13 @@ struct GlobalPositioningOptions {
 // sfm_data->poses (one per positioned view) and sfm_data->structure (landmark id = index of the
 // track in `tracks`, observations = feature id + raw pixel). The views should form one connected
 // component: each further component would float freely (its own translation and scale).
+// With `solve_tracks` (e.g. match_star_tracks.hpp), the solve uses those instead and every track
+// of `tracks` is triangulated from the solved cameras (landmark ids stay the indices in `tracks`).
 // On failure (nothing to position, rigs, solver failure) sfm_data is left untouched.
 // Throws Error when a track names a feature that does not exist.
 PositioningResult PositionCamerasAndPoints(const GlobalPositioningOptions& options,
                                            const std::map<IndexT, Eigen::Matrix3d>& rotations,
                                            const std::vector<Track>& tracks, const FeaturesPerView& features,
-                                           SfmData* sfm_data);
+                                           SfmData* sfm_data, const std::vector<Track>* solve_tracks = nullptr);
 
 }  // namespace sfm_pruning

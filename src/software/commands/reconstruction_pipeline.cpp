@@ -198,6 +198,11 @@ sfm_pruning::PositioningMethod Positioning(const EngineSettings& settings) {
                                           : sfm_pruning::PositioningMethod::kTranslationAveraging;
 }
 
+sfm_pruning::PositioningTracks PositioningTracks(const EngineSettings& settings) {
+  return settings.positioning_tracks == "MATCH_STARS" ? sfm_pruning::PositioningTracks::kMatchStars
+                                                      : sfm_pruning::PositioningTracks::kConnected;
+}
+
 }  // namespace
 
 void AddEngineOptions(CLI::App* cmd, EngineSettings* settings) {
@@ -214,6 +219,8 @@ sfm_pruning::PrunedGlobalEngineOptions PrunedEngineOptions(const EngineSettings&
   options.pruning = settings.pruning;
   options.engine.positioning = Positioning(settings);
   options.pruning.partition.engine.positioning = Positioning(settings);
+  options.engine.positioning_tracks = PositioningTracks(settings);
+  options.pruning.partition.engine.positioning_tracks = PositioningTracks(settings);
   options.SetSeedAndThreads(settings.seed, settings.num_threads);
   return options;
 }
@@ -228,6 +235,12 @@ void AddSolverOptions(CLI::App* cmd, EngineSettings* settings) {
   cmd->add_option("--positioning", settings->positioning,
                   "GLOMAP: global positioning of cameras and points; TRANSLATION_AVERAGING: from edge directions")
       ->check(CLI::IsMember({"GLOMAP", "TRANSLATION_AVERAGING"}))
+      ->capture_default_str();
+  cmd->add_option("--positioning_tracks", settings->positioning_tracks,
+                  "Tracks of the global positioning solve: CONNECTED (union-find tracks, GLOMAP) or MATCH_STARS "
+                  "(each feature with its direct matches: a wrong match between copies of a repeated texture "
+                  "misplaces one observation instead of merging two tracks; docs/pruning.md)")
+      ->check(CLI::IsMember({"CONNECTED", "MATCH_STARS"}))
       ->capture_default_str();
 }
 
@@ -260,6 +273,7 @@ Solution Solve(const EngineSettings& settings, const ReconstructionInput& input,
     options.seed = settings.seed;
     options.num_threads = settings.num_threads;
     options.positioning = Positioning(settings);
+    options.positioning_tracks = PositioningTracks(settings);
     options.bundle = bundle;
     if (schedule == Schedule::kFocalSearch) options = sfm_pruning::WithFocalSearchSchedule(options);
     RunGlobalEngine(options, graph, scene, input.features, &solution.model, &solution.report, TerminalProgressBar());

@@ -26,6 +26,7 @@ struct EngineSettings {
   uint64_t seed = 0;
   int num_threads = 1;
   std::string positioning = "GLOMAP";  // or TRANSLATION_AVERAGING
+  std::string positioning_tracks = "CONNECTED";  // or MATCH_STARS
   sfm_pruning::ViewGraphPruningOptions pruning;  // GLOBAL_PRUNED and `prune`
   IntrinsicsSettings intrinsics;                 // reconstruct and run
 };

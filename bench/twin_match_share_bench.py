@@ -1,0 +1,78 @@
+#!/usr/bin/env python3
+"""How many twin matches inside true pairs the GLOBAL engine survives, with each kind of
+positioning tracks. Writes bench/sections/twin_match_share.md.
+
+The synthetic street's true pairs carry matches between copies of its facade module (twin matches
+on the epipolar line, at a wrong depth; docs/pruning.md). Here the oracle deletes every
+twin-dominated pair (as bench/oracle_pruning_bench.py), then keeps a random share of the twin
+matches of the pairs left (ground_truth/feature_landmarks.txt labels every match; the share's
+sample is seeded by --sample_seed) and runs GLOBAL with `--positioning_tracks CONNECTED`
+(union-find tracks, GLOMAP) and `MATCH_STARS` (each feature with its direct matches:
+src/sfm_pruning/global/match_star_tracks.hpp). Python 3 standard library only.
+"""
+
+import sys
+from pathlib import Path
+
+sys.path.insert(0, str(Path(__file__).resolve().parent))
+import bench_support as bs  # noqa: E402
+import oracle_pruning_bench as ob  # noqa: E402
+import run_benchmarks as rb  # noqa: E402
+
+TRACKS = ("CONNECTED", "MATCH_STARS")
+
+
+def run_global(args, prunesfm, database, scene, out, tracks):
+    argv = [prunesfm, "run", "--database", database, "--image_path", scene / "images", "--output", out / "result",
+            "--engine", "GLOBAL", "--positioning_tracks", tracks, "--seed", args.seed, "--num_threads", args.threads]
+    stage = rb.run_stage("run", argv, out / "run.log", args.timeout)
+    model = out / "result" / "sparse" / "0" if stage["rc"] == 0 else None
+    return bs.evaluate_against(prunesfm, model, scene / "ground_truth" / "gt_cameras.txt", out, args.seed, args.timeout)
+
+
+def main():
+    parser = bs.argument_parser(__doc__, "/tmp/prunesfm-twin-share")
+    parser.add_argument("--scene", default="street", help="prunesfm synth scene")
+    parser.add_argument("--shares", default="0,0.2,0.4,0.6,0.8,1", help="shares of the twin matches kept")
+    parser.add_argument("--sample_seed", type=int, default=1, help="seed of the random share")
+    args = parser.parse_args()
+    prunesfm = str(Path(args.prunesfm).resolve()) if args.prunesfm else str(rb.find_prunesfm(None))
+    work = Path(args.work).resolve()
+    work.mkdir(parents=True, exist_ok=True)
+    scene = work / "scene"
+    rb.run_stage("synth", [prunesfm, "synth", "--scene", args.scene, "--seed", args.seed, "--output", scene],
+                 work / "synth.log", args.timeout)
+    labels = scene / "ground_truth" / "feature_landmarks.txt"
+    if not labels.is_file():
+        print(f"twin_match_share_bench: {labels} missing (a prunesfm older than its match labels)")
+        return 1
+    features = ob.read_feature_landmarks(labels)
+    pairs, num_pairs = ob.twin_dominated_pairs(scene / "ground_truth" / "synthetic_scene.json", 1.0)
+    oracle_db = work / "oracle.db"
+    rb.copy_database(scene / "database.db", oracle_db)
+    deleted_pairs = ob.delete_pairs(oracle_db, pairs)
+    lines = bs.header_lines("Twin matches inside true pairs: what the positioning survives", sys.argv, prunesfm, None)
+    lines += [f"`prunesfm synth --scene {args.scene} --seed {args.seed}`; the oracle deletes {deleted_pairs} of "
+              f"{num_pairs} pairs (twin matches outnumber true ones), then a random share of the twin matches "
+              f"left in the other pairs is kept (sample seed {args.sample_seed}). GLOBAL, AUC@3 / 5 / 10 "
+              "(registered images).", "",
+              "| twin matches kept | " + " | ".join(f"`--positioning_tracks {t}`" for t in TRACKS) + " |",
+              "|---|" + "---|" * len(TRACKS)]
+    for share in [float(s) for s in args.shares.split(",") if s]:
+        database = work / f"share_{share:g}.db"
+        rb.copy_database(oracle_db, database)
+        deleted, total = ob.delete_twin_matches(database, features, share, args.sample_seed)
+        cells = []
+        for tracks in TRACKS:
+            r = run_global(args, prunesfm, database, scene, work / f"share_{share:g}_{tracks}", tracks)
+            cells.append(f"{r['auc']['3']:.1f} / {r['auc']['5']:.1f} / {r['auc']['10']:.1f} "
+                         f"({r['registered']}/{r['num_reference']})")
+        kept = f"{share:.0%} (deleted {deleted} of {total} matches)"
+        lines.append(f"| {kept} | " + " | ".join(cells) + " |")
+        print(lines[-1], flush=True)
+    bs.write_fragment("twin_match_share", lines)
+    return 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())
