@@ -2,7 +2,8 @@
 //
 //   rotation averaging (filters edges > 10 deg, keeps the largest component)
 //   -> tracks (min length 3; 2 for graphs of at most 3 views)
-//   -> positioning: global positioning (GLOMAP, default) or translation averaging
+//   -> positioning: global positioning (GLOMAP, default; solved on the tracks or on match stars)
+//      or translation averaging
 //   -> num_bundle_rounds x (bundle adjustment -> structure filtering -> retriangulation), the
 //      first adjustment on a well-distributed subset of the landmarks
 //   -> final bundle adjustment and structure filtering

@@ -23,8 +23,8 @@ PositioningResult PositionCamerasAndPoints(const GlobalPositioningOptions& optio
   }
 
   // Unknowns: the cameras (increasing view id, so index 0 is the gauge camera), then the points of
-  // the solved tracks. Every camera of `rays` observes a solved track (the subsampling gives each
-  // view at least one).
+  // the solved tracks. Every camera of `solved_rays` observes a solved track (the subsampling gives
+  // each view at least one).
   std::vector<SampledTrack> sampled(solved_rays.size());
   for (size_t t = 0; t < solved_rays.size(); ++t) {
     for (const PositioningObservation& observation : solved_rays[t].observations) {
