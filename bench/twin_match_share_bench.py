@@ -5,8 +5,8 @@ positioning tracks. Writes bench/sections/twin_match_share.md.
 The synthetic street's true pairs carry matches between copies of its facade module (twin matches
 on the epipolar line, at a wrong depth; docs/pruning.md). Here the oracle deletes every
 twin-dominated pair (as bench/oracle_pruning_bench.py), then keeps a random share of the twin
-matches of the pairs left (ground_truth/feature_landmarks.txt labels every match; the share's
-sample is seeded by --sample_seed) and runs GLOBAL with `--positioning_tracks CONNECTED`
+matches of the pairs left (ground_truth/feature_landmarks.txt labels every match; one sample per
+seed of --sample_seeds) and runs GLOBAL with `--positioning_tracks CONNECTED`
 (union-find tracks, GLOMAP) and `MATCH_STARS` (each feature with its direct matches:
 src/sfm_pruning/global/match_star_tracks.hpp). Python 3 standard library only.
 """
@@ -34,7 +34,7 @@ def main():
     parser = bs.argument_parser(__doc__, "/tmp/prunesfm-twin-share")
     parser.add_argument("--scene", default="street", help="prunesfm synth scene")
     parser.add_argument("--shares", default="0,0.2,0.4,0.6,0.8,1", help="shares of the twin matches kept")
-    parser.add_argument("--sample_seed", type=int, default=1, help="seed of the random share")
+    parser.add_argument("--sample_seeds", default="1,2", help="seeds of the random shares (one row each)")
     args = parser.parse_args()
     prunesfm = str(Path(args.prunesfm).resolve()) if args.prunesfm else str(rb.find_prunesfm(None))
     work = Path(args.work).resolve()
@@ -54,22 +54,27 @@ def main():
     lines = bs.header_lines("Twin matches inside true pairs: what the positioning survives", sys.argv, prunesfm, None)
     lines += [f"`prunesfm synth --scene {args.scene} --seed {args.seed}`; the oracle deletes {deleted_pairs} of "
               f"{num_pairs} pairs (twin matches outnumber true ones), then a random share of the twin matches "
-              f"left in the other pairs is kept (sample seed {args.sample_seed}). GLOBAL, AUC@3 / 5 / 10 "
+              f"left in the other pairs is kept (one random sample per seed). GLOBAL, AUC@3 / 5 / 10 "
               "(registered images).", "",
-              "| twin matches kept | " + " | ".join(f"`--positioning_tracks {t}`" for t in TRACKS) + " |",
-              "|---|" + "---|" * len(TRACKS)]
+              "| twin matches kept | sample seed | " + " | ".join(f"`--positioning_tracks {t}`" for t in TRACKS) + " |",
+              "|---|---|" + "---|" * len(TRACKS)]
+    seeds = [int(x) for x in args.sample_seeds.split(",") if x]
     for share in [float(s) for s in args.shares.split(",") if s]:
-        database = work / f"share_{share:g}.db"
-        rb.copy_database(oracle_db, database)
-        deleted, total = ob.delete_twin_matches(database, features, share, args.sample_seed)
-        cells = []
-        for tracks in TRACKS:
-            r = run_global(args, prunesfm, database, scene, work / f"share_{share:g}_{tracks}", tracks)
-            cells.append(f"{r['auc']['3']:.1f} / {r['auc']['5']:.1f} / {r['auc']['10']:.1f} "
-                         f"({r['registered']}/{r['num_reference']})")
-        kept = f"{share:.0%} (deleted {deleted} of {total} matches)"
-        lines.append(f"| {kept} | " + " | ".join(cells) + " |")
-        print(lines[-1], flush=True)
+        # Keeping none or all of them leaves nothing to sample: one row.
+        for sample_seed in (seeds[:1] if share in (0.0, 1.0) else seeds):
+            name = f"share_{share:g}_seed_{sample_seed}"
+            database = work / f"{name}.db"
+            rb.copy_database(oracle_db, database)
+            deleted, total = ob.delete_twin_matches(database, features, share, sample_seed)
+            cells = []
+            for tracks in TRACKS:
+                r = run_global(args, prunesfm, database, scene, work / f"{name}_{tracks}", tracks)
+                cells.append(f"{r['auc']['3']:.1f} / {r['auc']['5']:.1f} / {r['auc']['10']:.1f} "
+                             f"({r['registered']}/{r['num_reference']})")
+            kept = f"{share:.0%} (deleted {deleted} of {total} matches)"
+            seed_cell = str(sample_seed) if share not in (0.0, 1.0) else "–"
+            lines.append(f"| {kept} | {seed_cell} | " + " | ".join(cells) + " |")
+            print(lines[-1], flush=True)
     bs.write_fragment("twin_match_share", lines)
     return 0
 

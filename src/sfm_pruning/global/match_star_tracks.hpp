@@ -8,9 +8,9 @@
 // one star, so a minority of wrong matches stays a minority in each view, which the positioning's
 // robust loss and rejection rounds can outvote.
 //
-// Measured on the synthetic street's oracle graph (184 true-dominated pairs, a random share of
-// its 5,473 twin matches kept): union-find tracks fold from 20 % of them on (AUC@10 50.6), stars
-// hold up to 60 % (95.6); with none 98.4 / 98.5, with all both fold (33.9 / 27.5).
+// Measured on the synthetic street's oracle graph (184 true-dominated pairs, a random 20-60 % of
+// its 5,473 twin matches kept, two samples each): union-find tracks fold (AUC@10 23.5-50.6), stars
+// hold (96.1-97.9); with none 98.4 / 98.5, with all both fold (33.9 / 33.2).
 //
 // A landmark seen by n views gives up to n stars; identical stars are kept once. The stars only
 // drive the positioning solve (which samples a bounded number of tracks per view); the structure
