@@ -95,12 +95,11 @@ bool RunStages(const GlobalEngineOptions& options, const ViewGraph& graph, const
       positioning.solver.max_num_iterations = options.positioning_max_num_iterations;
       positioning.solver.max_num_resolve_iterations = options.positioning_max_num_resolve_iterations;
       positioning.solver.progress = progress;
-      if (options.positioning_tracks == PositioningTracks::kMatchStars) {
-        const std::vector<Track> stars = BuildMatchStarTracks(kept, track_options.min_track_length);
-        report->positioning = PositionCamerasAndPoints(positioning, rotations, tracks.tracks, features, out, &stars);
-      } else {
-        report->positioning = PositionCamerasAndPoints(positioning, rotations, tracks.tracks, features, out);
-      }
+      const bool on_stars = options.positioning_tracks == PositioningTracks::kMatchStars;
+      const std::vector<Track> stars = on_stars ? BuildMatchStarTracks(kept, track_options.min_track_length)
+                                                : std::vector<Track>{};
+      report->positioning = PositionCamerasAndPoints(positioning, rotations, tracks.tracks, features, out,
+                                                     on_stars ? &stars : nullptr);
     } else {
       TranslationAveragingOptions averaging = options.translation_averaging;
       averaging.solver.seed = options.seed;

@@ -237,9 +237,10 @@ void AddSolverOptions(CLI::App* cmd, EngineSettings* settings) {
       ->check(CLI::IsMember({"GLOMAP", "TRANSLATION_AVERAGING"}))
       ->capture_default_str();
   cmd->add_option("--positioning_tracks", settings->positioning_tracks,
-                  "Tracks of the global positioning solve: CONNECTED (union-find tracks, GLOMAP) or MATCH_STARS "
-                  "(each feature with its direct matches: a wrong match between copies of a repeated texture "
-                  "misplaces one observation instead of merging two tracks; docs/pruning.md)")
+                  "Tracks of the global positioning solve (--positioning GLOMAP only): CONNECTED (union-find "
+                  "tracks, GLOMAP) or MATCH_STARS (each feature with its direct matches: a wrong match between "
+                  "copies of a repeated texture misplaces one observation instead of merging two tracks; "
+                  "docs/global.md)")
       ->check(CLI::IsMember({"CONNECTED", "MATCH_STARS"}))
       ->capture_default_str();
 }
