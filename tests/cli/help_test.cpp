@@ -24,6 +24,17 @@ TEST(Cli, UnknownOptionIsAnError) {
   EXPECT_FALSE(result.err.empty());
 }
 
+TEST(Cli, PositioningTracksWithTranslationAveragingIsRefused) {
+  // Translation averaging has no positioning tracks; the option would be silently ignored.
+  for (const char* command : {"reconstruct", "prune"}) {
+    const CommandResult result = RunPrunesfm({command, "--database", "/nonexistent/database.db", "--output", "/tmp/x.db",
+                                              "--positioning", "TRANSLATION_AVERAGING", "--positioning_tracks",
+                                              "MATCH_STARS"});
+    EXPECT_NE(result.exit_code, 0) << command;
+    EXPECT_NE(result.err.find("needs --positioning GLOMAP"), std::string::npos) << result.err;
+  }
+}
+
 TEST(Cli, MissingInputFileGivesOneLineNamingTheFile) {
   const CommandResult result = RunPrunesfm({"convert", "--input", "/nonexistent/sfm_data.json", "--output", "/tmp/x.ply"});
   EXPECT_EQ(result.exit_code, 1);

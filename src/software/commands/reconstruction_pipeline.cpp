@@ -243,6 +243,14 @@ void AddSolverOptions(CLI::App* cmd, EngineSettings* settings) {
                   "docs/global.md)")
       ->check(CLI::IsMember({"CONNECTED", "MATCH_STARS"}))
       ->capture_default_str();
+  // Translation averaging builds its tracks after the solve, from the solved cameras: the option
+  // would be ignored, so the combination is refused rather than run as if it had been honoured.
+  cmd->parse_complete_callback([settings]() {
+    if (settings->positioning == "TRANSLATION_AVERAGING" && settings->positioning_tracks == "MATCH_STARS") {
+      throw CLI::ValidationError("--positioning_tracks MATCH_STARS",
+                                 "needs --positioning GLOMAP (translation averaging has no positioning tracks)");
+    }
+  });
 }
 
 namespace {
