@@ -91,7 +91,17 @@ void AddFeatureOptions(CLI::App* cmd, FeatureSettings* settings) {
   cmd->add_flag("--no_root_sift", settings->no_root_sift, "Plain SIFT descriptors instead of RootSIFT");
 }
 
-void AddMatchOptions(CLI::App* cmd, MatchSettings* settings, bool with_seed) {
+void AddMaxEpipolarErrorOption(CLI::App* cmd, double* max_epipolar_error_deg) {
+  cmd->add_option("--max_epipolar_error_deg", *max_epipolar_error_deg,
+                  "Inlier threshold of the two-view verification: angle between a bearing and its epipolar "
+                  "plane (0.25 deg ~ 5 px at a focal of 1200 px). Lower keeps fewer matches that lie near but "
+                  "not on their epipolar line, such as those between copies of a texture repeated along the "
+                  "baseline (docs/global.md)")
+      ->check(CLI::PositiveNumber)
+      ->capture_default_str();
+}
+
+void AddMatchOptions(CLI::App* cmd, MatchSettings* settings, bool standalone) {
   cmd->add_option("--pairs", settings->pairs, "Pair selection")
       ->check(CLI::IsMember({"exhaustive", "sequential", "list"}))
       ->capture_default_str();
@@ -113,9 +123,10 @@ void AddMatchOptions(CLI::App* cmd, MatchSettings* settings, bool with_seed) {
   cmd->add_option("--flann_checks", settings->flann_checks, "FLANN: leaves visited per query")
       ->check(CLI::PositiveNumber)
       ->capture_default_str();
-  if (with_seed) {
+  if (standalone) {
     cmd->add_option("--seed", settings->seed, "Seed of the kd-trees and of the verification's RANSAC")
         ->capture_default_str();
+    AddMaxEpipolarErrorOption(cmd, &settings->max_epipolar_error_deg);
   }
 }
 
@@ -134,7 +145,7 @@ std::string SettingsKey(const MatchSettings& s) {
   return "pairs=" + s.pairs + "\nwindow=" + std::to_string(s.window) + "\nloop=" + std::to_string(s.loop) +
          "\npair_list=" + s.pair_list + "\nmatcher=" + s.matcher + "\nratio=" + Fixed(s.ratio, 6) +
          "\nmutual=" + std::to_string(!s.no_mutual) + "\nflann_checks=" + std::to_string(s.flann_checks) +
-         "\nseed=" + std::to_string(s.seed) + "\n";
+         "\nseed=" + std::to_string(s.seed) + "\nmax_epipolar_error_deg=" + Fixed(s.max_epipolar_error_deg, 6) + "\n";
 }
 
 int FrontEndThreads(int requested) {
@@ -219,6 +230,7 @@ MatchStageSummary RunMatchStage(const MatchSettings& settings, const sfm_pruning
   // selection of the largest component is the engine's job.
   sfm_pruning::ViewGraphBuildOptions verify;
   verify.seed = settings.seed;
+  verify.two_view.relative_pose.max_angular_error_deg = settings.max_epipolar_error_deg;
   verify.num_threads = num_threads;
   verify.keep_largest_component = false;
   sfm_pruning::ViewGraphBuildReport report;

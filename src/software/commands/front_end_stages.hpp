@@ -48,12 +48,18 @@ struct MatchSettings {
   bool no_mutual = false;
   int flann_checks = 64;
   uint64_t seed = 0;
+  double max_epipolar_error_deg = 0.25;  // the verification's inlier threshold
 };
+
+// --max_epipolar_error_deg, the verification's inlier threshold: in `match`, and among the engine
+// options of reconstruct, run and prune.
+void AddMaxEpipolarErrorOption(CLI::App* cmd, double* max_epipolar_error_deg);
 
 void AddInitOptions(CLI::App* cmd, InitSettings* settings);
 void AddFeatureOptions(CLI::App* cmd, FeatureSettings* settings);
-// `with_seed`: false when the command already has --seed (run's engine options).
-void AddMatchOptions(CLI::App* cmd, MatchSettings* settings, bool with_seed);
+// `standalone`: false when the command has the engine's options (run), which give --seed and
+// --max_epipolar_error_deg.
+void AddMatchOptions(CLI::App* cmd, MatchSettings* settings, bool standalone);
 
 // One line per setting, the key of a stage in run's manifest (a changed option reruns it).
 std::string SettingsKey(const InitSettings& settings);

@@ -20,6 +20,7 @@
 #include "sfm_pruning/report/run_view_graph.hpp"
 #include "sfm_pruning/util/error.hpp"
 #include "software/cli_support.hpp"
+#include "software/commands/front_end_stages.hpp"
 #include "software/commands/pruning_options.hpp"
 #include "software/commands/pruning_report_json.hpp"
 
@@ -48,6 +49,7 @@ sfm_pruning::ViewGraph BuildVerifiedViewGraph(const EngineSettings& settings, co
   sfm_pruning::ViewGraphBuildOptions options;
   options.seed = settings.seed;
   options.num_threads = settings.num_threads;
+  options.two_view.relative_pose.max_angular_error_deg = settings.max_epipolar_error_deg;
   sfm_pruning::ViewGraph graph;
   try {
     graph = input.verified.empty()
@@ -243,6 +245,7 @@ void AddSolverOptions(CLI::App* cmd, EngineSettings* settings) {
                   "docs/global.md)")
       ->check(CLI::IsMember({"CONNECTED", "MATCH_STARS"}))
       ->capture_default_str();
+  AddMaxEpipolarErrorOption(cmd, &settings->max_epipolar_error_deg);
   // Translation averaging builds its tracks after the solve, from the solved cameras: the option
   // would be ignored, so the combination is refused rather than run as if it had been honoured.
   cmd->parse_complete_callback([settings]() {

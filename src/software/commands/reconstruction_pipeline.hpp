@@ -27,11 +27,12 @@ struct EngineSettings {
   int num_threads = 1;
   std::string positioning = "GLOMAP";  // or TRANSLATION_AVERAGING
   std::string positioning_tracks = "CONNECTED";  // or MATCH_STARS
+  double max_epipolar_error_deg = 0.25;  // RelativePoseOptions::max_angular_error_deg
   sfm_pruning::ViewGraphPruningOptions pruning;  // GLOBAL_PRUNED and `prune`
   IntrinsicsSettings intrinsics;                 // reconstruct and run
 };
 
-// Adds --seed, --num_threads and --positioning to `cmd`.
+// Adds --seed, --num_threads, --positioning, --positioning_tracks and --max_epipolar_error_deg to `cmd`.
 void AddSolverOptions(CLI::App* cmd, EngineSettings* settings);
 
 // Adds --engine, the solver options, the intrinsics options (intrinsics_options.hpp) and the
