@@ -12,44 +12,43 @@ PositioningResult PositionCamerasAndPoints(const GlobalPositioningOptions& optio
   PositioningResult result;
   result.message = CheckOnePosePerView(*sfm_data, rotations);
   if (!result.message.empty()) return result;
+  // The subsampling picks the solved tracks from their pixels; rays are made for those only (with
+  // match stars, which outnumber the tracks several times, rays for all of them were most of the
+  // positioning's memory), and for every track of `tracks`, which are all triangulated or solved.
+  const std::vector<Track>& candidates = solve_tracks != nullptr ? *solve_tracks : tracks;
+  const std::vector<size_t> selected = SelectWellDistributedTracks(
+      PositionableTrackPixels(*sfm_data, features, rotations, candidates), options.subsampling);
+  std::vector<Track> selected_tracks;
+  selected_tracks.reserve(selected.size());
+  for (const size_t t : selected) selected_tracks.push_back(candidates[t]);
+  const std::vector<PositioningTrack> solved_rays = MakePositioningTracks(*sfm_data, features, rotations, selected_tracks);
   const std::vector<PositioningTrack> rays = MakePositioningTracks(*sfm_data, features, rotations, tracks);
-  const std::vector<PositioningTrack> solve_rays =
-      solve_tracks != nullptr ? MakePositioningTracks(*sfm_data, features, rotations, *solve_tracks)
-                              : std::vector<PositioningTrack>{};
-  const std::vector<PositioningTrack>& solved_rays = solve_tracks != nullptr ? solve_rays : rays;
   if (rays.empty() || solved_rays.empty()) {
     result.message = "no track is seen by two positionable views";
     return result;
   }
+  result.num_solved_tracks = solved_rays.size();
 
   // Unknowns: the cameras (increasing view id, so index 0 is the gauge camera), then the points of
   // the solved tracks. Every camera of `solved_rays` observes a solved track (the subsampling gives
   // each view at least one).
-  std::vector<SampledTrack> sampled(solved_rays.size());
-  for (size_t t = 0; t < solved_rays.size(); ++t) {
-    for (const PositioningObservation& observation : solved_rays[t].observations) {
-      sampled[t].push_back({observation.view_id, observation.pixel});
-    }
-  }
-  const std::vector<size_t> solved = SelectWellDistributedTracks(sampled, options.subsampling);
-  result.num_solved_tracks = solved.size();
   std::set<IndexT> camera_set;
-  for (const size_t t : solved) {
-    for (const PositioningObservation& observation : solved_rays[t].observations) camera_set.insert(observation.view_id);
+  for (const PositioningTrack& track : solved_rays) {
+    for (const PositioningObservation& observation : track.observations) camera_set.insert(observation.view_id);
   }
   const std::vector<IndexT> cameras(camera_set.begin(), camera_set.end());
   const auto camera_index = [&](IndexT view_id) {
     return static_cast<size_t>(std::lower_bound(cameras.begin(), cameras.end(), view_id) - cameras.begin());
   };
   std::vector<RayConstraint> constraints;
-  for (size_t k = 0; k < solved.size(); ++k) {
-    for (const PositioningObservation& observation : solved_rays[solved[k]].observations) {
+  for (size_t k = 0; k < solved_rays.size(); ++k) {
+    for (const PositioningObservation& observation : solved_rays[k].observations) {
       constraints.push_back({camera_index(observation.view_id), cameras.size() + k, observation.ray_world});
     }
   }
 
   std::vector<Eigen::Vector3d> positions;
-  if (!SolveFromRandomStart(options.solver, cameras.size() + solved.size(), constraints, "global_positioning",
+  if (!SolveFromRandomStart(options.solver, cameras.size() + solved_rays.size(), constraints, "global_positioning",
                             &positions, &result)
            .usable) {
     return result;
@@ -60,9 +59,14 @@ PositioningResult PositionCamerasAndPoints(const GlobalPositioningOptions& optio
   // The solve's own points, when it solved the structure's tracks; the other tracks are triangulated.
   std::vector<std::optional<Eigen::Vector3d>> points(rays.size());
   std::vector<bool> is_solved(rays.size(), false);
-  for (size_t k = 0; solve_tracks == nullptr && k < solved.size(); ++k) {
-    points[solved[k]] = positions[cameras.size() + k];
-    is_solved[solved[k]] = true;
+  if (solve_tracks == nullptr) {
+    std::vector<size_t> ray_of_track(tracks.size(), rays.size());
+    for (size_t r = 0; r < rays.size(); ++r) ray_of_track[rays[r].track_id] = r;
+    for (size_t k = 0; k < selected.size(); ++k) {
+      const size_t r = ray_of_track[selected[k]];
+      points[r] = positions[cameras.size() + k];
+      is_solved[r] = true;
+    }
   }
   std::vector<PositioningTrack> others;
   for (size_t t = 0; t < rays.size(); ++t) {

@@ -27,6 +27,15 @@ std::map<IndexT, RayView> PositionableViews(const SfmData& sfm_data, const Featu
   return views;
 }
 
+// The feature's raw pixel; throws Error when the view has no such feature.
+Eigen::Vector2d CheckedPosition(const RayView& view, size_t track_id, IndexT view_id, IndexT feature_id) {
+  if (feature_id >= view.features->size()) {
+    throw Error("track " + std::to_string(track_id) + ": view " + std::to_string(view_id) + " has no feature " +
+                std::to_string(feature_id));
+  }
+  return view.features->Position(feature_id);
+}
+
 }  // namespace
 
 bool CanReceivePose(const SfmData& sfm_data, const std::map<IndexT, Eigen::Matrix3d>& rotations, IndexT view_id) {
@@ -45,19 +54,32 @@ std::vector<PositioningTrack> MakePositioningTracks(const SfmData& sfm_data, con
     for (const auto& [view_id, feature_id] : tracks[track_id]) {
       const auto view = views.find(view_id);
       if (view == views.end()) continue;
-      if (feature_id >= view->second.features->size()) {
-        throw Error("track " + std::to_string(track_id) + ": view " + std::to_string(view_id) +
-                    " has no feature " + std::to_string(feature_id));
-      }
       PositioningObservation observation;
       observation.view_id = view_id;
       observation.feature_id = feature_id;
-      observation.pixel = view->second.features->Position(feature_id);
+      observation.pixel = CheckedPosition(view->second, track_id, view_id, feature_id);
       observation.bearing = view->second.intrinsics->Unproject(observation.pixel).normalized();
       observation.ray_world = view->second.camera_to_world * observation.bearing;
       track.observations.push_back(observation);
     }
     if (track.observations.size() >= 2) result.push_back(std::move(track));
+  }
+  return result;
+}
+
+std::vector<SampledTrack> PositionableTrackPixels(const SfmData& sfm_data, const FeaturesPerView& features,
+                                                  const std::map<IndexT, Eigen::Matrix3d>& rotations,
+                                                  const std::vector<Track>& tracks) {
+  const std::map<IndexT, RayView> views = PositionableViews(sfm_data, features, rotations);
+  std::vector<SampledTrack> result(tracks.size());
+  for (size_t track_id = 0; track_id < tracks.size(); ++track_id) {
+    SampledTrack& sampled = result[track_id];
+    for (const auto& [view_id, feature_id] : tracks[track_id]) {
+      const auto view = views.find(view_id);
+      if (view == views.end()) continue;
+      sampled.push_back({view_id, CheckedPosition(view->second, track_id, view_id, feature_id)});
+    }
+    if (sampled.size() < 2) sampled.clear();
   }
   return result;
 }

@@ -8,6 +8,7 @@
 
 #include <Eigen/Core>
 
+#include "sfm_pruning/global/track_subsampling.hpp"
 #include "sfm_pruning/global/tracks.hpp"
 #include "sfm_pruning/sfm/features.hpp"
 #include "sfm_pruning/sfm/sfm_data.hpp"
@@ -36,6 +37,12 @@ bool CanReceivePose(const SfmData& sfm_data, const std::map<IndexT, Eigen::Matri
 std::vector<PositioningTrack> MakePositioningTracks(const SfmData& sfm_data, const FeaturesPerView& features,
                                                     const std::map<IndexT, Eigen::Matrix3d>& rotations,
                                                     const std::vector<Track>& tracks);
+
+// The pixels of the observations MakePositioningTracks would keep, one entry per track of `tracks`
+// (empty when fewer than two remain): what the subsampling needs, without a ray per observation.
+std::vector<SampledTrack> PositionableTrackPixels(const SfmData& sfm_data, const FeaturesPerView& features,
+                                                  const std::map<IndexT, Eigen::Matrix3d>& rotations,
+                                                  const std::vector<Track>& tracks);
 
 // Empty when every view with a rotation can receive its own pose; otherwise why not (several
 // views sharing one pose id, i.e. a rig, which positioning does not model).
