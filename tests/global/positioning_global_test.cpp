@@ -1,3 +1,5 @@
+#include <algorithm>
+
 #include <gtest/gtest.h>
 
 #include "positioning_synthetic_scene.hpp"
@@ -101,9 +103,26 @@ TEST(GlobalPositioning, RejectsRigs) {
 TEST(GlobalPositioning, ViewsWithoutRotationAreLeftOut) {
   testing::PositioningScene scene = testing::MakePositioningScene({});
   scene.rotations.erase(10);
+  // A first track seen by view 10 and one other view keeps a single positionable observation.
+  // Without a subsampling cap it is among the candidates the selection returns, and the k-th solved
+  // point must still be the k-th kept track's.
+  std::vector<Track> tracks = TracksOf(scene);
+  for (const Track& track : tracks) {
+    if (track.count(10) == 0) continue;
+    const auto other = std::find_if(track.begin(), track.end(), [](const auto& entry) { return entry.first != 10; });
+    tracks.insert(tracks.begin(), Track{{10, track.at(10)}, *other});
+    break;
+  }
+  size_t num_kept = 0;
+  for (const Track& track : tracks) num_kept += track.size() - track.count(10) >= 2;
+  ASSERT_LT(num_kept, tracks.size());
+  GlobalPositioningOptions options;
+  options.subsampling.max_tracks_per_view = 0;
   const PositioningResult result =
-      PositionCamerasAndPoints({}, scene.rotations, TracksOf(scene), scene.features, &scene.sfm_data);
+      PositionCamerasAndPoints(options, scene.rotations, tracks, scene.features, &scene.sfm_data);
   ASSERT_TRUE(result.success) << result.message;
+  EXPECT_EQ(result.num_landmarks, num_kept);
+  EXPECT_EQ(result.num_filtered_observations, 0u);  // exact data: every point on its rays
   EXPECT_EQ(scene.sfm_data.poses.count(scene.sfm_data.views.at(10).id_pose), 0u);
   for (const auto& [landmark_id, landmark] : scene.sfm_data.structure) EXPECT_EQ(landmark.observations.count(10), 0u);
   EXPECT_LT(testing::MaxRelativeCenterError(scene.true_poses, scene.sfm_data), 1e-4);

@@ -16,8 +16,13 @@ PositioningResult PositionCamerasAndPoints(const GlobalPositioningOptions& optio
   // match stars, which outnumber the tracks several times, rays for all of them were most of the
   // positioning's memory), and for every track of `tracks`, which are all triangulated or solved.
   const std::vector<Track>& candidates = solve_tracks != nullptr ? *solve_tracks : tracks;
-  const std::vector<size_t> selected = SelectWellDistributedTracks(
-      PositionableTrackPixels(*sfm_data, features, rotations, candidates), options.subsampling);
+  const std::vector<SampledTrack> pixels = PositionableTrackPixels(*sfm_data, features, rotations, candidates);
+  std::vector<size_t> selected = SelectWellDistributedTracks(pixels, options.subsampling);
+  // Without a cap every index comes back, also those of tracks with fewer than two positionable
+  // observations, which MakePositioningTracks would drop: the solve's k-th point must be the k-th
+  // selected track.
+  selected.erase(std::remove_if(selected.begin(), selected.end(), [&](size_t t) { return pixels[t].empty(); }),
+                 selected.end());
   std::vector<Track> selected_tracks;
   selected_tracks.reserve(selected.size());
   for (const size_t t : selected) selected_tracks.push_back(candidates[t]);
@@ -29,9 +34,8 @@ PositioningResult PositionCamerasAndPoints(const GlobalPositioningOptions& optio
   }
   result.num_solved_tracks = solved_rays.size();
 
-  // Unknowns: the cameras (increasing view id, so index 0 is the gauge camera), then the points of
-  // the solved tracks. Every camera of `solved_rays` observes a solved track (the subsampling gives
-  // each view at least one).
+  // Unknowns: the cameras of the solved tracks (increasing view id, so index 0 is the gauge camera),
+  // then their points. The subsampling gives every view with a candidate track at least one.
   std::set<IndexT> camera_set;
   for (const PositioningTrack& track : solved_rays) {
     for (const PositioningObservation& observation : track.observations) camera_set.insert(observation.view_id);

@@ -98,6 +98,7 @@ void AddMaxEpipolarErrorOption(CLI::App* cmd, double* max_epipolar_error_deg) {
                   "not on their epipolar line, such as those between copies of a texture repeated along the "
                   "baseline (docs/global.md)")
       ->check(CLI::PositiveNumber)
+      ->check(CLI::Range(0.0, 90.0))
       ->capture_default_str();
 }
 

@@ -137,6 +137,8 @@ nlohmann::json TimingsJson(const EngineSettings& settings, const sfm_pruning::Vi
   nlohmann::json json;
   json["engine"] = settings.engine;
   json["positioning"] = settings.positioning;
+  json["positioning_tracks"] = settings.positioning_tracks;
+  json["max_epipolar_error_deg"] = settings.max_epipolar_error_deg;
   json["seed"] = settings.seed;
   json["num_threads"] = settings.num_threads;
   json["stages"] = std::move(stages);
@@ -248,6 +250,7 @@ void AddSolverOptions(CLI::App* cmd, EngineSettings* settings) {
   AddMaxEpipolarErrorOption(cmd, &settings->max_epipolar_error_deg);
   // Translation averaging builds its tracks after the solve, from the solved cameras: the option
   // would be ignored, so the combination is refused rather than run as if it had been honoured.
+  // This takes the command's one parse-complete callback slot (reconstruct, run and prune set none).
   cmd->parse_complete_callback([settings]() {
     if (settings->positioning == "TRANSLATION_AVERAGING" && settings->positioning_tracks == "MATCH_STARS") {
       throw CLI::ValidationError("--positioning_tracks MATCH_STARS",
