@@ -116,6 +116,30 @@ TEST(CliReconstruct, EpipolarThresholdReachesTheVerification) {
   EXPECT_NE(zero.exit_code, 0);
 }
 
+TEST(CliReconstruct, MatchVerifiesWithTheGivenEpipolarThreshold) {
+  // `prunesfm match` on the project's features: a tighter threshold keeps fewer verified inliers.
+  const fs::path scratch = ScratchDir("cli_match_epipolar");
+  size_t inliers[2] = {0, 0};
+  const char* thresholds[2] = {"0.25", "0.1"};
+  for (int k = 0; k < 2; ++k) {
+    const fs::path matches_dir = scratch / thresholds[k];
+    fs::create_directories(matches_dir);
+    for (const fs::directory_entry& entry : fs::directory_iterator(CleanProject() / "matches")) {
+      const std::string extension = entry.path().extension().string();
+      if (extension == ".feat" || extension == ".desc" || extension == ".json") {
+        fs::copy_file(entry.path(), matches_dir / entry.path().filename());
+      }
+    }
+    const CommandResult result =
+        RunPrunesfm({"match", "--sfm_data", (CleanProject() / "sfm_data.json").string(), "--matches_dir",
+                     matches_dir.string(), "--num_threads", "1", "--max_epipolar_error_deg", thresholds[k]});
+    ASSERT_EQ(result.exit_code, 0) << result.err;
+    for (const auto& [pair, matches] : ReadOpenMvgMatches(matches_dir / "matches.e.bin")) inliers[k] += matches.size();
+  }
+  EXPECT_GT(inliers[1], 0u);
+  EXPECT_LT(inliers[1], inliers[0]);
+}
+
 TEST(CliReconstruct, MissingDatabaseIsOneLine) {
   const CommandResult result = RunPrunesfm(
       {"reconstruct", "--database", "/nonexistent/database.db", "--output", ScratchDir("cli_rec_missing").string()});
