@@ -12,47 +12,56 @@ PositioningResult PositionCamerasAndPoints(const GlobalPositioningOptions& optio
   PositioningResult result;
   result.message = CheckOnePosePerView(*sfm_data, rotations);
   if (!result.message.empty()) return result;
-  // The subsampling picks the solved tracks from their pixels; rays are made for those only (with
-  // match stars, which outnumber the tracks several times, rays for all of them were most of the
-  // positioning's memory), and for every track of `tracks`, which are all triangulated or solved.
+  // The subsampling picks the solved tracks from their pixels. Rays are made for every track of
+  // `tracks` (each is solved or triangulated) and, with match stars, for the selected stars only:
+  // they outnumber the tracks several times, and rays for all of them were most of the memory.
   const std::vector<Track>& candidates = solve_tracks != nullptr ? *solve_tracks : tracks;
   const std::vector<SampledTrack> pixels = PositionableTrackPixels(*sfm_data, features, rotations, candidates);
   std::vector<size_t> selected = SelectWellDistributedTracks(pixels, options.subsampling);
   // Without a cap every index comes back, also those of tracks with fewer than two positionable
-  // observations, which MakePositioningTracks would drop: the solve's k-th point must be the k-th
+  // observations, which MakePositioningTracks drops: the solve's k-th point must be the k-th
   // selected track.
   selected.erase(std::remove_if(selected.begin(), selected.end(), [&](size_t t) { return pixels[t].empty(); }),
                  selected.end());
-  std::vector<Track> selected_tracks;
-  selected_tracks.reserve(selected.size());
-  for (const size_t t : selected) selected_tracks.push_back(candidates[t]);
-  const std::vector<PositioningTrack> solved_rays = MakePositioningTracks(*sfm_data, features, rotations, selected_tracks);
   const std::vector<PositioningTrack> rays = MakePositioningTracks(*sfm_data, features, rotations, tracks);
-  if (rays.empty() || solved_rays.empty()) {
+  std::vector<size_t> ray_of_track(tracks.size(), rays.size());
+  for (size_t r = 0; r < rays.size(); ++r) ray_of_track[rays[r].track_id] = r;
+  std::vector<PositioningTrack> star_rays;
+  if (solve_tracks != nullptr) {
+    std::vector<Track> selected_stars;
+    selected_stars.reserve(selected.size());
+    for (const size_t t : selected) selected_stars.push_back(candidates[t]);
+    star_rays = MakePositioningTracks(*sfm_data, features, rotations, selected_stars);
+  }
+  std::vector<const PositioningTrack*> solved;  // the k-th is the k-th selected track
+  for (size_t k = 0; k < selected.size(); ++k) {
+    solved.push_back(solve_tracks != nullptr ? &star_rays[k] : &rays[ray_of_track[selected[k]]]);
+  }
+  if (rays.empty() || solved.empty()) {
     result.message = "no track is seen by two positionable views";
     return result;
   }
-  result.num_solved_tracks = solved_rays.size();
+  result.num_solved_tracks = solved.size();
 
   // Unknowns: the cameras of the solved tracks (increasing view id, so index 0 is the gauge camera),
   // then their points. The subsampling gives every view with a candidate track at least one.
   std::set<IndexT> camera_set;
-  for (const PositioningTrack& track : solved_rays) {
-    for (const PositioningObservation& observation : track.observations) camera_set.insert(observation.view_id);
+  for (const PositioningTrack* track : solved) {
+    for (const PositioningObservation& observation : track->observations) camera_set.insert(observation.view_id);
   }
   const std::vector<IndexT> cameras(camera_set.begin(), camera_set.end());
   const auto camera_index = [&](IndexT view_id) {
     return static_cast<size_t>(std::lower_bound(cameras.begin(), cameras.end(), view_id) - cameras.begin());
   };
   std::vector<RayConstraint> constraints;
-  for (size_t k = 0; k < solved_rays.size(); ++k) {
-    for (const PositioningObservation& observation : solved_rays[k].observations) {
+  for (size_t k = 0; k < solved.size(); ++k) {
+    for (const PositioningObservation& observation : solved[k]->observations) {
       constraints.push_back({camera_index(observation.view_id), cameras.size() + k, observation.ray_world});
     }
   }
 
   std::vector<Eigen::Vector3d> positions;
-  if (!SolveFromRandomStart(options.solver, cameras.size() + solved_rays.size(), constraints, "global_positioning",
+  if (!SolveFromRandomStart(options.solver, cameras.size() + solved.size(), constraints, "global_positioning",
                             &positions, &result)
            .usable) {
     return result;
@@ -63,14 +72,10 @@ PositioningResult PositionCamerasAndPoints(const GlobalPositioningOptions& optio
   // The solve's own points, when it solved the structure's tracks; the other tracks are triangulated.
   std::vector<std::optional<Eigen::Vector3d>> points(rays.size());
   std::vector<bool> is_solved(rays.size(), false);
-  if (solve_tracks == nullptr) {
-    std::vector<size_t> ray_of_track(tracks.size(), rays.size());
-    for (size_t r = 0; r < rays.size(); ++r) ray_of_track[rays[r].track_id] = r;
-    for (size_t k = 0; k < selected.size(); ++k) {
-      const size_t r = ray_of_track[selected[k]];
-      points[r] = positions[cameras.size() + k];
-      is_solved[r] = true;
-    }
+  for (size_t k = 0; solve_tracks == nullptr && k < selected.size(); ++k) {
+    const size_t r = ray_of_track[selected[k]];
+    points[r] = positions[cameras.size() + k];
+    is_solved[r] = true;
   }
   std::vector<PositioningTrack> others;
   for (size_t t = 0; t < rays.size(); ++t) {
