@@ -1,4 +1,5 @@
 #include <algorithm>
+#include <map>
 #include <optional>
 
 #include <gtest/gtest.h>
@@ -6,6 +7,7 @@
 #include "pruning/pruning_test_scene.hpp"
 #include "sfm_pruning/geometry/so3.hpp"
 #include "sfm_pruning/pruning/chained_relative_pose.hpp"
+#include "sfm_pruning/pruning/edge_depth_scale.hpp"
 #include "sfm_pruning/pruning/subgraph_alignment.hpp"
 
 namespace sfm_pruning {
@@ -313,6 +315,100 @@ TEST(SubgraphAlignment, PairsWithFewEdgesFollowTheirPolicy) {
   const SubgraphSolution lone = scene.Solution({12}, Similarity());
   EXPECT_EQ(AlignSubgraphPair(scene.graph, k1, lone, scene.views_and_intrinsics, scene.features).status,
             SubgraphAlignmentStatus::kNoEdges);
+}
+
+// The pair's most distinctive edge as a witness (SubgraphAlignmentOptions::distinctive_witness_ratio)
+// and the one-edge scale it needs (edge_depth_scale.hpp).
+TEST(EdgeDepthScale, OneExactEdgeGivesTheScaleBetweenTheFrames) {
+  PruningTestScene scene = MakePruningTestScene(16, 50, 11);
+  scene.AddExactEdge(3, 8);
+  const Similarity frame_k1 = RandomSimilarity(1, kScaleK1);
+  const SubgraphSolution k1 = scene.Solution(kViewsK1, frame_k1);
+  const SubgraphSolution k2 = scene.Solution(kViewsK2, RandomSimilarity(2, kScaleK2));
+  const Pose j_in_k1 = frame_k1.Apply(scene.poses[8]);  // what an exact PnP gives
+  const std::optional<double> beta = EdgeDepthScale(scene.graph, 3, 8, k1, IndexLandmarksByObservation(k1), j_in_k1,
+                                                    k2, IndexLandmarksByObservation(k2));
+  ASSERT_TRUE(beta.has_value());
+  EXPECT_NEAR(*beta, kTrueBeta, 1e-9);
+
+  // Too few features seen in both frames: no scale.
+  EXPECT_FALSE(EdgeDepthScale(scene.graph, 3, 8, k1, IndexLandmarksByObservation(k1), j_in_k1, k2,
+                              IndexLandmarksByObservation(k2), 51)
+                   .has_value());
+}
+
+// Two true edges that both land on view 8 against six twin edges spread over views 9–14 that
+// agree with each other (the copy of the structure shifted along the arc): the largest consensus
+// is the twins', and no sample of the true edges has a scale. Their inliers are more distinctive
+// (the weights say so: 0.3 per inlier against 0.05), and the most distinctive edge's own depth
+// scale gives the true hypothesis.
+TEST(DistinctiveWitness, KeepsAMinorityOfTrueEdgesThatLandOnOneView) {
+  PruningTestScene scene = MakePruningTestScene(16, 60, 11);
+  const std::vector<ViewPair> true_edges = {{6, 8}, {7, 8}};
+  const std::vector<ViewPair> twin_edges = {{0, 9}, {1, 10}, {2, 11}, {3, 12}, {4, 13}, {5, 14}};
+  for (const ViewPair& edge : true_edges) scene.AddExactEdge(edge.first, edge.second);
+  Similarity twin;
+  twin.rotation = ExpSO3(DegToRad(30.0) * Eigen::Vector3d::UnitZ());
+  for (const ViewPair& edge : twin_edges) scene.AddTwinEdge(edge.first, edge.second, twin);
+  const SubgraphSolution k1 = scene.Solution(kViewsK1, RandomSimilarity(1, kScaleK1));
+  const SubgraphSolution k2 = scene.Solution(kViewsK2, RandomSimilarity(2, kScaleK2));
+  std::map<ViewPair, double> weights;
+  scene.graph.ForEachValidEdge([&](const ViewPair& pair, const ViewGraphEdge& edge) {
+    const bool is_true = std::count(true_edges.begin(), true_edges.end(), pair) > 0;
+    weights[pair] = (is_true ? 0.3 : 0.05) * static_cast<double>(edge.matches.size());
+  });
+  SubgraphAlignmentOptions options;
+  options.sample_fraction = 0.3;  // samples of two edges
+  options.distinctive_witness_ratio = 0.5;
+
+  const SubgraphAlignmentResult without =
+      AlignSubgraphPair(scene.graph, k1, k2, scene.views_and_intrinsics, scene.features, options);
+  ASSERT_EQ(without.status, SubgraphAlignmentStatus::kAligned);
+  EXPECT_EQ(without.KeptEdges(), twin_edges);
+  EXPECT_EQ(without.RemovedEdges(), true_edges);
+
+  const SubgraphAlignmentResult with =
+      AlignSubgraphPair(scene.graph, k1, k2, scene.views_and_intrinsics, scene.features, options, &weights);
+  ASSERT_EQ(with.status, SubgraphAlignmentStatus::kAligned);
+  EXPECT_EQ(with.KeptEdges(), true_edges);
+  EXPECT_EQ(with.RemovedEdges(), twin_edges);
+  ASSERT_GE(with.selected_hypothesis, 0);
+  const AlignmentHypothesis& selected = with.hypotheses[static_cast<size_t>(with.selected_hypothesis)];
+  EXPECT_TRUE(selected.distinctive_witness);
+  EXPECT_NEAR(selected.distinctive_share, 0.3, 1e-12);
+  EXPECT_NEAR(with.hypotheses[0].distinctive_share, 0.05, 1e-12);  // the twins' consensus
+  EXPECT_NEAR(with.beta, kTrueBeta, 1e-6);
+  EXPECT_TRUE(with.has_frame_transform);
+
+  // Off: the paper's choice.
+  options.distinctive_witness_ratio = 0.0;
+  EXPECT_EQ(AlignSubgraphPair(scene.graph, k1, k2, scene.views_and_intrinsics, scene.features, options, &weights)
+                .KeptEdges(),
+            twin_edges);
+}
+
+// Where the selected consensus already contains the most distinctive edge nothing changes.
+TEST(DistinctiveWitness, AConsensusWithTheWitnessStands) {
+  PruningTestScene scene = MakePruningTestScene(16, 50, 11);
+  for (const ViewPair& edge : std::vector<ViewPair>{{0, 8}, {1, 9}, {2, 10}, {3, 11}, {4, 12}}) {
+    scene.AddExactEdge(edge.first, edge.second);
+  }
+  const SubgraphSolution k1 = scene.Solution(kViewsK1, RandomSimilarity(1, kScaleK1));
+  const SubgraphSolution k2 = scene.Solution(kViewsK2, RandomSimilarity(2, kScaleK2));
+  std::map<ViewPair, double> weights;
+  double share = 0.05;
+  scene.graph.ForEachValidEdge([&](const ViewPair& pair, const ViewGraphEdge& edge) {
+    weights[pair] = share * static_cast<double>(edge.matches.size());
+    share *= 2.0;  // one edge far more distinctive than the others
+  });
+  SubgraphAlignmentOptions options;
+  options.distinctive_witness_ratio = 0.5;
+  const SubgraphAlignmentResult result =
+      AlignSubgraphPair(scene.graph, k1, k2, scene.views_and_intrinsics, scene.features, options, &weights);
+  ASSERT_EQ(result.status, SubgraphAlignmentStatus::kAligned);
+  EXPECT_EQ(result.KeptEdges().size(), 5u);
+  EXPECT_EQ(result.hypotheses.size(), 1u);
+  EXPECT_FALSE(result.hypotheses[0].distinctive_witness);
 }
 
 }  // namespace

@@ -7,6 +7,7 @@
 #include <random>
 
 #include "sfm_pruning/geometry/so3.hpp"
+#include "sfm_pruning/pruning/edge_depth_scale.hpp"
 
 namespace sfm_pruning {
 namespace {
@@ -23,6 +24,13 @@ struct Hypothesis {
 struct EdgeCoverage {
   size_t expected = 0;
   size_t matched = 0;
+};
+
+// What a voting edge shows besides its chained pose (Options::distinctive_witness_ratio).
+struct EdgeDistinctiveness {
+  double weight = 0.0;   // DistinctiveMatchWeights
+  double inliers = 0.0;  // its inlier matches
+  std::optional<double> depth_scale;  // EdgeDepthScale
 };
 
 struct Deviation {
@@ -222,13 +230,68 @@ bool ApplyRotationOnlyConsensus(const std::vector<ChainedRelativePose>& chains,
   return true;
 }
 
+// Σ weight / Σ inliers over the consensus edges; -1 when nothing is known.
+double ConsensusShare(const Consensus& consensus, const std::vector<EdgeDistinctiveness>& distinctiveness) {
+  double weight = 0.0;
+  double inliers = 0.0;
+  for (size_t k = 0; k < distinctiveness.size(); ++k) {
+    if (!consensus.inlier[k]) continue;
+    weight += distinctiveness[k].weight;
+    inliers += distinctiveness[k].inliers;
+  }
+  return inliers > 0.0 ? weight / inliers : -1.0;
+}
+
+// The most distinctive voting edge with a depth scale (the first on ties); empty when none has one.
+std::optional<size_t> MostDistinctiveEdge(const std::vector<EdgeDistinctiveness>& distinctiveness) {
+  std::optional<size_t> best;
+  double best_share = -1.0;
+  for (size_t k = 0; k < distinctiveness.size(); ++k) {
+    const EdgeDistinctiveness& edge = distinctiveness[k];
+    if (!edge.depth_scale || !(*edge.depth_scale > 0.0) || !(edge.inliers > 0.0)) continue;
+    const double share = edge.weight / edge.inliers;
+    if (share > best_share) {
+      best = k;
+      best_share = share;
+    }
+  }
+  return best;
+}
+
+// The hypothesis of edge `witness` alone (its chained pose at its depth scale), refitted on its
+// consensus while that grows and keeps the witness (Options::distinctive_witness_ratio).
+Candidate WitnessCandidate(const std::vector<ChainedRelativePose>& chains, size_t witness, double depth_scale,
+                           const Options& options) {
+  Candidate candidate;
+  candidate.hypothesis.beta = depth_scale;
+  candidate.hypothesis.mean_rotation = chains[witness].rotation;
+  candidate.hypothesis.mean_log_rotation = LogSO3(chains[witness].rotation);
+  candidate.hypothesis.mean_translation = chains[witness].Translation(depth_scale);
+  candidate.consensus = CountConsensus(chains, candidate.hypothesis, options);
+  constexpr int kRefineRounds = 3;
+  for (int round = 0; round < kRefineRounds; ++round) {
+    std::vector<size_t> members;
+    for (size_t k = 0; k < chains.size(); ++k) {
+      if (candidate.consensus.inlier[k]) members.push_back(k);
+    }
+    const std::optional<Hypothesis> refit = FitHypothesis(chains, members, options);
+    if (!refit) break;
+    Consensus consensus = CountConsensus(chains, *refit, options);
+    if (!consensus.inlier[witness] || consensus.count <= candidate.consensus.count) break;
+    candidate.hypothesis = *refit;
+    candidate.consensus = std::move(consensus);
+  }
+  return candidate;
+}
+
 // Runs RANSAC over the voting edges and writes the verdicts of the voters into `result`.
 // kLargestConsensus keeps the first run's winner (the paper). kMatchCoverage runs RANSAC again on
 // the edges outside every consensus found so far (up to max_hypotheses candidates) and keeps the
 // largest candidate that its coverage score does not rule out (the largest of all if it rules out
 // every one).
 void RunRansac(const std::vector<ChainedRelativePose>& chains, const std::vector<EdgeCoverage>& coverage,
-               const std::vector<size_t>& voter_edge_index, const Options& options, SubgraphAlignmentResult* result) {
+               const std::vector<EdgeDistinctiveness>& distinctiveness, const std::vector<size_t>& voter_edge_index,
+               const Options& options, SubgraphAlignmentResult* result) {
   const size_t n = chains.size();
   std::mt19937_64 rng(options.seed);
   std::vector<size_t> pool(n);
@@ -253,7 +316,16 @@ void RunRansac(const std::vector<ChainedRelativePose>& chains, const std::vector
   }
   const bool supported = std::any_of(candidates.begin(), candidates.end(),
                                      [](const Candidate& c) { return c.consensus.count > 0; });
-  if (!supported && options.rotation_only_fallback && ApplyRotationOnlyConsensus(chains, voter_edge_index, options, result)) {
+  const std::optional<size_t> witness =
+      options.distinctive_witness_ratio > 0.0 ? MostDistinctiveEdge(distinctiveness) : std::nullopt;
+  // No sample made a hypothesis any edge supports (e.g. every edge lands on one view), but the most
+  // distinctive edge has a scale of its own: its hypothesis decides, before the rotation alone.
+  const bool witness_decides = !supported && witness.has_value();
+  const size_t witness_edge = witness.value_or(0);  // (value_or: GCC 12 warns on *witness below)
+  if (witness_decides) {
+    candidates.assign(1, WitnessCandidate(chains, witness_edge, *distinctiveness[witness_edge].depth_scale, options));
+  } else if (!supported && options.rotation_only_fallback &&
+             ApplyRotationOnlyConsensus(chains, voter_edge_index, options, result)) {
     return;
   }
   if (candidates.empty()) {
@@ -267,6 +339,8 @@ void RunRansac(const std::vector<ChainedRelativePose>& chains, const std::vector
     summary.consensus_size = candidates[c].consensus.count;
     summary.beta = candidates[c].hypothesis.beta;
     ScoreCoverage(candidates[c].consensus, coverage, options, &summary);
+    summary.distinctive_share = ConsensusShare(candidates[c].consensus, distinctiveness);
+    summary.distinctive_witness = witness_decides;
     result->hypotheses.push_back(summary);
   }
   // Candidates whose edges miss more landmarks than the break-even are ruled out; the largest
@@ -290,6 +364,20 @@ void RunRansac(const std::vector<ChainedRelativePose>& chains, const std::vector
     const bool better = ruled_out[chosen] ? (!ruled_out[c] || larger) : (!ruled_out[c] && larger);
     if (better) chosen = c;
   }
+  if (witness.has_value() && !candidates[chosen].consensus.inlier[witness_edge]) {
+    Candidate candidate =
+        WitnessCandidate(chains, witness_edge, *distinctiveness[witness_edge].depth_scale, options);
+    AlignmentHypothesis summary;
+    summary.consensus_size = candidate.consensus.count;
+    summary.beta = candidate.hypothesis.beta;
+    ScoreCoverage(candidate.consensus, coverage, options, &summary);
+    summary.distinctive_share = ConsensusShare(candidate.consensus, distinctiveness);
+    summary.distinctive_witness = true;
+    const double chosen_share = result->hypotheses[chosen].distinctive_share;
+    result->hypotheses.push_back(summary);
+    candidates.push_back(std::move(candidate));
+    if (chosen_share < options.distinctive_witness_ratio * summary.distinctive_share) chosen = candidates.size() - 1;
+  }
   result->selected_hypothesis = static_cast<int>(chosen);
   const std::optional<Hypothesis> best = candidates[chosen].hypothesis;
   const Consensus& best_consensus = candidates[chosen].consensus;
@@ -312,6 +400,26 @@ void RunRansac(const std::vector<ChainedRelativePose>& chains, const std::vector
                            ? InterSubgraphVerdict::kRotationDeviation
                            : InterSubgraphVerdict::kTranslationDeviation;
   }
+}
+
+// The distinctive weight, inlier count and depth scale of the voting edge (i, j); nothing without
+// distinctive weights.
+EdgeDistinctiveness MeasureDistinctiveness(const ViewGraph& graph, const ViewPair& edge, const SubgraphSolution& k1,
+                                           const std::map<ObservationKey, IndexT>& landmarks_k1,
+                                           const Pose& pose_j_in_k1, const SubgraphSolution& k2,
+                                           const std::map<ObservationKey, IndexT>& landmarks_k2,
+                                           const std::map<ViewPair, double>* distinctive_weights) {
+  EdgeDistinctiveness out;
+  if (distinctive_weights == nullptr) return out;
+  const ViewPair key = MakeViewPair(edge.first, edge.second);
+  const auto weight = distinctive_weights->find(key);
+  const ViewGraphEdge* graph_edge = graph.FindEdge(key.first, key.second);
+  if (weight == distinctive_weights->end() || graph_edge == nullptr) return out;
+  out.weight = weight->second;
+  out.inliers = static_cast<double>(graph_edge->matches.size());
+  out.depth_scale =
+      EdgeDepthScale(graph, edge.first, edge.second, k1, landmarks_k1, pose_j_in_k1, k2, landmarks_k2);
+  return out;
 }
 
 }  // namespace
@@ -383,16 +491,20 @@ EdgeInvalidation InterSubgraphInvalidation(const InterSubgraphEdgeDecision& deci
 
 SubgraphAlignmentResult AlignSubgraphPair(const ViewGraph& graph, const SubgraphSolution& k1,
                                           const SubgraphSolution& k2, const SfmData& views_and_intrinsics,
-                                          const FeaturesPerView& features, const Options& options) {
+                                          const FeaturesPerView& features, const Options& options,
+                                          const std::map<ViewPair, double>* distinctive_weights) {
   SubgraphAlignmentResult result;
   const std::vector<ViewPair> connecting = ConnectingEdges(graph, k1.view_ids, k2.view_ids);
   if (connecting.empty()) return result;
 
   const std::map<ObservationKey, IndexT> landmarks_k1 = IndexLandmarksByObservation(k1);
+  std::map<ObservationKey, IndexT> landmarks_k2;
+  if (distinctive_weights != nullptr) landmarks_k2 = IndexLandmarksByObservation(k2);
   const Pose mean_k1 = SubgraphMeanPose(k1);
   const Pose mean_k2 = SubgraphMeanPose(k2);
   std::vector<ChainedRelativePose> chains;
   std::vector<EdgeCoverage> coverage;
+  std::vector<EdgeDistinctiveness> distinctiveness;
   std::vector<size_t> voter_edge_index;
   for (const ViewPair& edge : connecting) {
     InterSubgraphEdgeDecision decision;
@@ -405,6 +517,9 @@ SubgraphAlignmentResult AlignSubgraphPair(const ViewGraph& graph, const Subgraph
       chains.push_back(ChainRelativePose(mean_k1, decision.placement.pose_j_in_k1, pose_j_in_k2->second, mean_k2,
                                          options.scale_application));
       coverage.push_back({decision.placement.num_expected_landmarks, decision.placement.num_matched_landmarks});
+      distinctiveness.push_back(
+          MeasureDistinctiveness(graph, edge, k1, landmarks_k1, decision.placement.pose_j_in_k1, k2, landmarks_k2,
+                                 distinctive_weights));
       voter_edge_index.push_back(result.edges.size());
     } else {
       decision.verdict = InterSubgraphVerdict::kCannotVote;
@@ -419,7 +534,7 @@ SubgraphAlignmentResult AlignSubgraphPair(const ViewGraph& graph, const Subgraph
                         options.few_edges == Options::FewEdgesPolicy::kKeepAll);
     return result;
   }
-  RunRansac(chains, coverage, voter_edge_index, options, &result);
+  RunRansac(chains, coverage, distinctiveness, voter_edge_index, options, &result);
   if (result.status == SubgraphAlignmentStatus::kAligned &&
       options.scale_application == ScaleApplication::kSubgraphFrame) {
     result.has_frame_transform = true;

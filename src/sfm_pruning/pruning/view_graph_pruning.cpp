@@ -9,6 +9,7 @@
 #include "sfm_pruning/pruning/subgraph_cycle_consistency.hpp"
 #include "sfm_pruning/util/parallel_for.hpp"
 #include "sfm_pruning/util/statistics.hpp"
+#include "sfm_pruning/view_graph/distinctive_weights.hpp"
 #include "sfm_pruning/view_graph/components.hpp"
 
 namespace sfm_pruning {
@@ -197,6 +198,10 @@ void PruneViewGraph(const ViewGraphPruningOptions& options, ViewGraph* graph, co
   start = std::chrono::steady_clock::now();
   const std::vector<AcceptedSubgraph>& accepted = out.partition.accepted;
   const std::vector<std::pair<int, int>> pairs = ConnectedSubgraphPairs(*graph, accepted);
+  std::map<ViewPair, double> distinctive_weights;
+  if (options.alignment.distinctive_witness_ratio > 0.0) {
+    distinctive_weights = DistinctiveMatchWeights(component_graph, FeatureDistinctiveness(component_graph));
+  }
   std::vector<SubgraphAlignmentResult> alignments(pairs.size());
   ParallelFor(
       pairs.size(), options.num_threads,
@@ -208,7 +213,8 @@ void PruneViewGraph(const ViewGraphPruningOptions& options, ViewGraph* graph, co
         // have none, and then no edge of the pair could vote.
         const bool second_places = s2.landmarks.size() > s1.landmarks.size();
         alignments[p] = AlignSubgraphPair(*graph, second_places ? s2 : s1, second_places ? s1 : s2,
-                                          views_and_intrinsics, features, PairAlignmentOptions(options, num_edges));
+                                          views_and_intrinsics, features, PairAlignmentOptions(options, num_edges),
+                                          distinctive_weights.empty() ? nullptr : &distinctive_weights);
         if (second_places) ExpressFromTheFirstSubgraph(&alignments[p]);
       },
       progress, "inter-subgraph pruning");

@@ -54,7 +54,9 @@ nlohmann::json PruningReportJson(const sfm_pruning::ViewGraphPruningReport& prun
                             {"beta", h.beta},
                             {"expected_landmarks", h.expected_landmarks},
                             {"matched_landmarks", h.matched_landmarks},
-                            {"coverage_score", h.coverage_score}});
+                            {"coverage_score", h.coverage_score},
+                            {"distinctive_share", h.distinctive_share},
+                            {"distinctive_witness", h.distinctive_witness}});
     }
     pairs.push_back({{"hypotheses", std::move(hypotheses)},
                      {"selected_hypothesis", pair.selected_hypothesis},
