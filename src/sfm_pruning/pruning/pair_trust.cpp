@@ -45,16 +45,10 @@ PairTrust::PairTrust(PairTrustMeasure measure, const ViewGraph& graph, const std
   reference_coverage_ = InsideMatchCoverage(graph, accepted, views_and_intrinsics, placement);
   if (measure_ == PairTrustMeasure::kMatchCoverage) return;
   edge_weights_ = DistinctiveMatchWeights(graph, FeatureDistinctiveness(graph));
-  std::map<IndexT, size_t> subgraph_of;
-  for (size_t k = 0; k < accepted.size(); ++k) {
-    for (IndexT view : accepted[k].solution.view_ids) subgraph_of[view] = k;
-  }
   std::vector<ViewPair> inside;
-  graph.ForEachValidEdge([&](const ViewPair& pair, const ViewGraphEdge&) {
-    const auto a = subgraph_of.find(pair.first);
-    const auto b = subgraph_of.find(pair.second);
-    if (a != subgraph_of.end() && b != subgraph_of.end() && a->second == b->second) inside.push_back(pair);
-  });
+  for (const EdgeOfSubgraphs& edge : EdgesOfAcceptedSubgraphs(graph, accepted)) {
+    if (edge.k_first == edge.k_second) inside.push_back(edge.pair);
+  }
   reference_share_ = Share(inside);
 }
 

@@ -258,4 +258,19 @@ RecursivePartitionResult PartitionViewGraph(const RecursivePartitionOptions& opt
   return Renumber(Partitioner(options, graph, views_and_intrinsics, features, progress).Run());
 }
 
+std::vector<EdgeOfSubgraphs> EdgesOfAcceptedSubgraphs(const ViewGraph& graph,
+                                                      const std::vector<AcceptedSubgraph>& accepted) {
+  std::map<IndexT, int> subgraph_of;
+  for (size_t k = 0; k < accepted.size(); ++k) {
+    for (IndexT view : accepted[k].solution.view_ids) subgraph_of[view] = static_cast<int>(k);
+  }
+  std::vector<EdgeOfSubgraphs> edges;
+  graph.ForEachValidEdge([&](const ViewPair& pair, const ViewGraphEdge&) {
+    const auto a = subgraph_of.find(pair.first);
+    const auto b = subgraph_of.find(pair.second);
+    if (a != subgraph_of.end() && b != subgraph_of.end()) edges.push_back({pair, a->second, b->second});
+  });
+  return edges;
+}
+
 }  // namespace sfm_pruning

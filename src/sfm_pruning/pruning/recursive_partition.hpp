@@ -86,6 +86,18 @@ struct AcceptedSubgraph {
   SubgraphSolution solution;
 };
 
+// A valid edge of a graph whose two views lie in accepted subgraphs, with the subgraphs' indices.
+struct EdgeOfSubgraphs {
+  ViewPair pair;
+  int k_first = -1;   // subgraph of pair.first
+  int k_second = -1;  // subgraph of pair.second
+};
+
+// Every valid edge of `graph` between views of accepted subgraphs (inside one or between two), in
+// ViewPair order.
+std::vector<EdgeOfSubgraphs> EdgesOfAcceptedSubgraphs(const ViewGraph& graph,
+                                                      const std::vector<AcceptedSubgraph>& accepted);
+
 struct RecursivePartitionResult {
   std::vector<SubgraphNode> nodes;  // nodes[0] = root; a node's children are consecutive, depth first
   std::vector<AcceptedSubgraph> accepted;  // in acceptance order (depth first, largest first)

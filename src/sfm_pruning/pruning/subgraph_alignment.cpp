@@ -445,6 +445,7 @@ const char* InterSubgraphVerdictName(InterSubgraphVerdict verdict) {
     case InterSubgraphVerdict::kUnjudged: return "unjudged";
     case InterSubgraphVerdict::kLoopInconsistent: return "loop_inconsistent";
     case InterSubgraphVerdict::kUnverified: return "unverified";
+    case InterSubgraphVerdict::kModelDisagreement: return "model_disagreement";
   }
   return "unknown";
 }

@@ -136,6 +136,8 @@ enum class InterSubgraphVerdict {
                           // loops of subgraphs (subgraph_loop_consistency.hpp)
   kUnverified,            // removed with its whole pair: redundant, and nothing verifies it
                           // against the trusted forest (trusted_link_forest.hpp)
+  kModelDisagreement,     // kept by the pruning, removed by the audit against the model solved from
+                          // the pruned graph (model_edge_audit.hpp)
 };
 
 const char* InterSubgraphVerdictName(InterSubgraphVerdict verdict);

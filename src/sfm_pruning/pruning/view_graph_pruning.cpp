@@ -22,17 +22,12 @@ double SecondsSince(std::chrono::steady_clock::time_point start) {
 // Pairs (k1 < k2) of accepted subgraphs joined by at least one valid edge, in increasing order.
 std::vector<std::pair<int, int>> ConnectedSubgraphPairs(const ViewGraph& graph,
                                                         const std::vector<AcceptedSubgraph>& accepted) {
-  std::map<IndexT, int> subgraph_of;
-  for (size_t k = 0; k < accepted.size(); ++k) {
-    for (IndexT view : accepted[k].solution.view_ids) subgraph_of[view] = static_cast<int>(k);
-  }
   std::set<std::pair<int, int>> connected;
-  graph.ForEachValidEdge([&](const ViewPair& pair, const ViewGraphEdge&) {
-    const auto a = subgraph_of.find(pair.first);
-    const auto b = subgraph_of.find(pair.second);
-    if (a == subgraph_of.end() || b == subgraph_of.end() || a->second == b->second) return;
-    connected.emplace(std::min(a->second, b->second), std::max(a->second, b->second));
-  });
+  for (const EdgeOfSubgraphs& edge : EdgesOfAcceptedSubgraphs(graph, accepted)) {
+    if (edge.k_first != edge.k_second) {
+      connected.emplace(std::min(edge.k_first, edge.k_second), std::max(edge.k_first, edge.k_second));
+    }
+  }
   return {connected.begin(), connected.end()};
 }
 
@@ -304,14 +299,68 @@ void PrunedGlobalEngineOptions::SetSeedAndThreads(uint64_t seed, int num_threads
   pruning.num_threads = num_threads;
 }
 
+namespace {
+
+// The valid edges of `graph` between two different accepted subgraphs: those the pruning decided.
+std::vector<ViewPair> InterSubgraphEdges(const ViewGraph& graph, const std::vector<AcceptedSubgraph>& accepted) {
+  std::vector<ViewPair> edges;
+  for (const EdgeOfSubgraphs& edge : EdgesOfAcceptedSubgraphs(graph, accepted)) {
+    if (edge.k_first != edge.k_second) edges.push_back(edge.pair);
+  }
+  return edges;
+}
+
+// Applies the audit's verdicts to `pruned` and to the pruning report; returns whether any edge changed.
+bool ApplyAudit(const ModelEdgeAuditOptions& options, ViewGraph* pruned, PrunedGlobalEngineReport* result) {
+  std::vector<RemovedEdge>& removed = result->pruning.removed_edges;
+  bool changed = false;
+  for (const EdgeAgreement& agreement : result->pruning.audit) {
+    if (agreement.transferred < options.min_transferred_matches) continue;
+    ViewGraphEdge* edge = pruned->MutableEdge(agreement.pair.first, agreement.pair.second);
+    const auto entry = std::find_if(removed.begin(), removed.end(),
+                                    [&](const RemovedEdge& r) { return r.pair == agreement.pair; });
+    if (!edge->is_valid && agreement.Share() >= options.readmit_agreement && entry != removed.end()) {
+      edge->is_valid = true;
+      edge->invalidation = EdgeInvalidation();
+      removed.erase(entry);
+      ++result->pruning.audit_readmitted;
+      changed = true;
+    } else if (edge->is_valid && agreement.Share() < options.keep_agreement) {
+      const EdgeInvalidation why{EdgeInvalidReason::kModelDisagreement, agreement.Share(), options.keep_agreement};
+      pruned->InvalidateEdge(agreement.pair.first, agreement.pair.second, why);
+      RemovedEdge entry_added;
+      entry_added.pair = agreement.pair;
+      entry_added.verdict = InterSubgraphVerdict::kModelDisagreement;
+      entry_added.invalidation = why;
+      removed.push_back(entry_added);
+      ++result->pruning.audit_removed;
+      changed = true;
+    }
+  }
+  result->pruning.num_output_edges = pruned->NumValidEdges();
+  return changed;
+}
+
+}  // namespace
+
 void RunPrunedGlobalEngine(const PrunedGlobalEngineOptions& options, const ViewGraph& graph,
                            const SfmData& views_and_intrinsics, const FeaturesPerView& features, SfmData* out,
                            PrunedGlobalEngineReport* report, const ProgressCallback& progress) {
   PrunedGlobalEngineReport local;
   PrunedGlobalEngineReport& result = report != nullptr ? *report : local;
+  result = PrunedGlobalEngineReport();
   ViewGraph pruned = graph;
   PruneViewGraph(options.pruning, &pruned, views_and_intrinsics, features, &result.pruning, progress);
   RunGlobalEngine(options.engine, pruned, views_and_intrinsics, features, out, &result.engine, progress);
+  if (!options.pruning.audit.enabled || !result.engine.success) return;
+
+  const auto start = std::chrono::steady_clock::now();
+  result.pruning.audit = AuditEdgesAgainstModel(graph, InterSubgraphEdges(graph, result.pruning.partition.accepted), *out,
+                                        features, options.pruning.audit);
+  const bool changed = ApplyAudit(options.pruning.audit, &pruned, &result);
+  result.pruning.timings.push_back({"solve before the audit", result.engine.total_seconds});
+  result.pruning.timings.push_back({"model audit", SecondsSince(start)});
+  if (changed) RunGlobalEngine(options.engine, pruned, views_and_intrinsics, features, out, &result.engine, progress);
 }
 
 }  // namespace sfm_pruning

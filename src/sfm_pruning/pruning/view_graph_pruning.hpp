@@ -18,13 +18,16 @@
 // Edges inside an accepted subgraph are never touched.
 //
 // RunPrunedGlobalEngine (GLOBAL_PRUNED) = PruneViewGraph on a copy of the graph, then
-// RunGlobalEngine on the pruned graph (which keeps its largest component).
+// RunGlobalEngine on the pruned graph (which keeps its largest component); with the audit
+// (model_edge_audit.hpp), the inter-subgraph edges are then judged against that model, removed ones
+// that it transfers re-admitted and kept ones it does not removed, and the graph solved again.
 #pragma once
 
 #include <string>
 #include <vector>
 
 #include "sfm_pruning/global/global_engine.hpp"
+#include "sfm_pruning/pruning/model_edge_audit.hpp"
 #include "sfm_pruning/pruning/pair_trust.hpp"
 #include "sfm_pruning/pruning/recursive_partition.hpp"
 #include "sfm_pruning/pruning/subgraph_alignment.hpp"
@@ -55,6 +58,9 @@ struct ViewGraphPruningOptions {
   // (docs/pruning.md).
   PairTrustMeasure link_trust = PairTrustMeasure::kDistinctiveShare;
   int num_threads = 1;  // subgraph pairs aligned in parallel (the result does not depend on it)
+  // The pruning's decisions reviewed against the model solved from the pruned graph, then solved
+  // again (off by default; applied by RunPrunedGlobalEngine, not PruneViewGraph).
+  ModelEdgeAuditOptions audit;
 };
 
 struct SubgraphPairReport {
@@ -105,7 +111,12 @@ struct ViewGraphPruningReport {
   double reference_coverage = 0.0;
   size_t num_input_edges = 0;   // valid edges before pruning
   size_t num_output_edges = 0;  // valid edges after pruning
-  std::vector<StageTiming> timings;  // "subgraph partition", "inter-subgraph pruning"
+  // The model audit (ViewGraphPruningOptions::audit, RunPrunedGlobalEngine): every inter-subgraph
+  // edge measured against the first solve, and what changed (the engine then solved again).
+  std::vector<EdgeAgreement> audit;
+  size_t audit_readmitted = 0;
+  size_t audit_removed = 0;
+  std::vector<StageTiming> timings;  // "subgraph partition", "inter-subgraph pruning" (+ the audit's)
   double total_seconds = 0.0;
 };
 
@@ -124,8 +135,8 @@ struct PrunedGlobalEngineOptions {
 };
 
 struct PrunedGlobalEngineReport {
-  ViewGraphPruningReport pruning;
-  GlobalEngineReport engine;
+  ViewGraphPruningReport pruning;  // with the audit's changes (removed_edges, audit, timings)
+  GlobalEngineReport engine;       // the last solve
 };
 
 // GLOBAL_PRUNED. `graph` is copied, not modified. Same output contract as RunGlobalEngine.

@@ -18,6 +18,8 @@ std::string EdgeInvalidReasonName(EdgeInvalidReason reason) {
       return "subgraph_loop_inconsistent";
     case EdgeInvalidReason::kUnverifiedSubgraphPair:
       return "unverified_subgraph_pair";
+    case EdgeInvalidReason::kModelDisagreement:
+      return "model_disagreement";
     case EdgeInvalidReason::kOther:
       return "other";
   }

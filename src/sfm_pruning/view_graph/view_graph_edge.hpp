@@ -23,6 +23,8 @@ enum class EdgeInvalidReason {
                                // (triangle vote); or the measure that broke its cycle and its bound
                                // (trusted forest: degrees, scale ratio or translation fraction)
   kUnverifiedSubgraphPair,     // value: trust of its pair, threshold: 0 (redundant, no transform to verify it)
+  kModelDisagreement,          // value: share of its matches the pruned model transfers, threshold: the
+                               // share required (pruning/model_edge_audit.hpp)
   kOther,                      // any other stage; value is stage-defined
 };
 

@@ -120,6 +120,28 @@ void AddPruningOptions(CLI::App* cmd, sfm_pruning::ViewGraphPruningOptions* opti
       ->check(CLI::NonNegativeNumber)
       ->capture_default_str();
 
+  // The model's audit of the pruning (not in the paper; docs/pruning.md).
+  sfm_pruning::ModelEdgeAuditOptions& audit = options->audit;
+  group->add_option("--prune_model_audit", audit.enabled,
+                    "GLOBAL_PRUNED: judge the edges between subgraphs against the model solved from the pruned "
+                    "graph (re-admit removed edges whose matches it transfers, remove kept ones it does not), "
+                    "then solve again")
+      ->capture_default_str();
+  group->add_option("--prune_audit_max_error_px", audit.max_transfer_error_px,
+                    "Model audit: a match agrees when its landmark projects within this many pixels of the other "
+                    "feature")
+      ->check(CLI::PositiveNumber)
+      ->capture_default_str();
+  group->add_option("--prune_audit_readmit_agreement", audit.readmit_agreement,
+                    "Model audit: a removed edge is re-admitted when at least this share of its transferred matches "
+                    "agree")
+      ->check(CLI::Range(0.0, 1.0))
+      ->capture_default_str();
+  group->add_option("--prune_audit_keep_agreement", audit.keep_agreement,
+                    "Model audit: a kept edge is removed when less than this share of its transferred matches agree")
+      ->check(CLI::Range(0.0, 1.0))
+      ->capture_default_str();
+
   // Loops of subgraph pairs (not in the paper; docs/pruning.md).
   sfm_pruning::SubgraphLoopOptions& loops = options->loops;
   group->add_option("--prune_subgraph_loops", loops.enabled,

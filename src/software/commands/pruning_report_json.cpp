@@ -106,6 +106,12 @@ nlohmann::json PruningReportJson(const sfm_pruning::ViewGraphPruningReport& prun
                        {"value", edge.invalidation.value},
                        {"threshold", edge.invalidation.threshold}});
   }
+  nlohmann::json audit = nlohmann::json::array();
+  for (const EdgeAgreement& agreement : pruning.audit) {
+    audit.push_back({{"pair", ViewPairJson(agreement.pair)},
+                     {"transferred", agreement.transferred},
+                     {"agreeing", agreement.agreeing}});
+  }
   nlohmann::json phases = nlohmann::json::array();
   for (const StageTiming& timing : pruning.timings) phases.push_back({{"stage", timing.stage}, {"seconds", timing.seconds}});
   return {{"edges_in", pruning.num_input_edges},
@@ -120,7 +126,10 @@ nlohmann::json PruningReportJson(const sfm_pruning::ViewGraphPruningReport& prun
           {"subgraph_pairs", std::move(pairs)},
           {"subgraph_triangles", std::move(triangles)},
           {"subgraph_cycles", std::move(cycles)},
-          {"removed_edges", std::move(removed)}};
+          {"removed_edges", std::move(removed)},
+          {"model_audit", {{"edges", std::move(audit)},
+                           {"readmitted", pruning.audit_readmitted},
+                           {"removed", pruning.audit_removed}}}};
 }
 
 void WriteJsonAtomically(const nlohmann::json& report, const std::filesystem::path& path) {
@@ -134,7 +143,10 @@ std::string PruningSummary(const sfm_pruning::ViewGraphPruningReport& pruning) {
          std::to_string(pruning.partition.nodes.size()) + " tree nodes, " +
          std::to_string(pruning.partition.num_engine_runs) + " engine runs), removed " +
          std::to_string(pruning.removed_edges.size()) + " of " + std::to_string(pruning.num_input_edges) +
-         " edges in " + std::to_string(pruning.pairs.size()) + " subgraph pairs, " + seconds + " s";
+         " edges in " + std::to_string(pruning.pairs.size()) + " subgraph pairs, " + seconds + " s" +
+         (pruning.audit.empty() ? std::string()
+                                : "; model audit: " + std::to_string(pruning.audit_readmitted) + " re-admitted, " +
+                                      std::to_string(pruning.audit_removed) + " removed");
 }
 
 }  // namespace prunesfm
