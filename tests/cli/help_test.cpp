@@ -35,6 +35,18 @@ TEST(Cli, PositioningTracksWithTranslationAveragingIsRefused) {
   }
 }
 
+TEST(Cli, ModelAuditIsOfferedOnlyWhereTheGraphIsSolved) {
+  // `prune` writes the pruned database and solves nothing: the audit would be silently ignored.
+  const CommandResult prune = RunPrunesfm({"prune", "--database", "/nonexistent/database.db", "--output", "/tmp/x.db",
+                                           "--prune_model_audit", "true"});
+  EXPECT_NE(prune.exit_code, 0);
+  EXPECT_NE(prune.err.find("--prune_model_audit"), std::string::npos) << prune.err;
+  const CommandResult run = RunPrunesfm({"run", "--help"});
+  EXPECT_EQ(run.exit_code, 0);
+  EXPECT_NE(run.out.find("--prune_model_audit"), std::string::npos);
+  EXPECT_NE(run.out.find("--prune_distinctive_witness"), std::string::npos);
+}
+
 TEST(Cli, MissingInputFileGivesOneLineNamingTheFile) {
   const CommandResult result = RunPrunesfm({"convert", "--input", "/nonexistent/sfm_data.json", "--output", "/tmp/x.ply"});
   EXPECT_EQ(result.exit_code, 1);

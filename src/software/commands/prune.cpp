@@ -166,7 +166,7 @@ void AddPruneCommand(CLI::App& app) {
   cmd->add_option("--output,-o", args->output, "Pruned database, or pruned OpenMVG match file")->required();
   cmd->add_option("--report", args->report, "Pruning report JSON (default: OUTPUT.pruning_report.json)");
   AddSolverOptions(cmd, &args->settings);
-  AddPruningOptions(cmd, &args->settings.pruning);
+  AddPruningOptions(cmd, &args->settings.pruning, false);
   cmd->callback([args]() { RunPrune(*args); });
 }
 

@@ -7,7 +7,7 @@
 
 namespace prunesfm {
 
-void AddPruningOptions(CLI::App* cmd, sfm_pruning::ViewGraphPruningOptions* options) {
+void AddPruningOptions(CLI::App* cmd, sfm_pruning::ViewGraphPruningOptions* options, bool final_solve) {
   CLI::App* group = cmd->add_option_group("Pruning", "View-graph pruning (GLOBAL_PRUNED, prune); paper values");
   sfm_pruning::RecursivePartitionOptions& partition = options->partition;
   sfm_pruning::ConsistencyTestOptions& consistency = partition.consistency;
@@ -121,26 +121,29 @@ void AddPruningOptions(CLI::App* cmd, sfm_pruning::ViewGraphPruningOptions* opti
       ->capture_default_str();
 
   // The model's audit of the pruning (not in the paper; docs/pruning.md).
-  sfm_pruning::ModelEdgeAuditOptions& audit = options->audit;
-  group->add_option("--prune_model_audit", audit.enabled,
-                    "GLOBAL_PRUNED: judge the edges between subgraphs against the model solved from the pruned "
-                    "graph (re-admit removed edges whose matches it transfers, remove kept ones it does not), "
-                    "then solve again")
-      ->capture_default_str();
-  group->add_option("--prune_audit_max_error_px", audit.max_transfer_error_px,
-                    "Model audit: a match agrees when its landmark projects within this many pixels of the other "
-                    "feature")
-      ->check(CLI::PositiveNumber)
-      ->capture_default_str();
-  group->add_option("--prune_audit_readmit_agreement", audit.readmit_agreement,
-                    "Model audit: a removed edge is re-admitted when at least this share of its transferred matches "
-                    "agree")
-      ->check(CLI::Range(0.0, 1.0))
-      ->capture_default_str();
-  group->add_option("--prune_audit_keep_agreement", audit.keep_agreement,
-                    "Model audit: a kept edge is removed when less than this share of its transferred matches agree")
-      ->check(CLI::Range(0.0, 1.0))
-      ->capture_default_str();
+  if (final_solve) {
+    sfm_pruning::ModelEdgeAuditOptions& audit = options->audit;
+    group->add_option("--prune_model_audit", audit.enabled,
+                      "GLOBAL_PRUNED: judge the edges between subgraphs against the model solved from the pruned "
+                      "graph (re-admit removed edges whose matches it transfers, remove kept ones it does not), "
+                      "then solve again")
+        ->capture_default_str();
+    group->add_option("--prune_audit_max_error_px", audit.max_transfer_error_px,
+                      "Model audit: a match agrees when its landmark projects within this many pixels of the other "
+                      "feature")
+        ->check(CLI::PositiveNumber)
+        ->capture_default_str();
+    group->add_option("--prune_audit_readmit_agreement", audit.readmit_agreement,
+                      "Model audit: a removed edge is re-admitted when at least this share of its transferred "
+                      "matches agree")
+        ->check(CLI::Range(0.0, 1.0))
+        ->capture_default_str();
+    group->add_option("--prune_audit_keep_agreement", audit.keep_agreement,
+                      "Model audit: a kept edge is removed when less than this share of its transferred matches "
+                      "agree")
+        ->check(CLI::Range(0.0, 1.0))
+        ->capture_default_str();
+  }
 
   // Loops of subgraph pairs (not in the paper; docs/pruning.md).
   sfm_pruning::SubgraphLoopOptions& loops = options->loops;

@@ -12,6 +12,8 @@ class App;
 namespace prunesfm {
 
 // Adds the pruning options to `cmd` (in an option group "Pruning"), bound to `options`.
-void AddPruningOptions(CLI::App* cmd, sfm_pruning::ViewGraphPruningOptions* options);
+// `final_solve`: the subcommand solves the pruned graph (run, reconstruct), so the options of the
+// model audit apply; `prune` only writes the pruned database and does not offer them.
+void AddPruningOptions(CLI::App* cmd, sfm_pruning::ViewGraphPruningOptions* options, bool final_solve);
 
 }  // namespace prunesfm

@@ -215,7 +215,7 @@ void AddEngineOptions(CLI::App* cmd, EngineSettings* settings) {
       ->capture_default_str();
   AddSolverOptions(cmd, settings);
   AddIntrinsicsOptions(cmd, &settings->intrinsics);
-  AddPruningOptions(cmd, &settings->pruning);
+  AddPruningOptions(cmd, &settings->pruning, true);
 }
 
 sfm_pruning::PrunedGlobalEngineOptions PrunedEngineOptions(const EngineSettings& settings) {
