@@ -139,6 +139,10 @@ nlohmann::json TimingsJson(const EngineSettings& settings, const sfm_pruning::Vi
   json["positioning"] = settings.positioning;
   json["positioning_tracks"] = settings.positioning_tracks;
   json["max_epipolar_error_deg"] = settings.max_epipolar_error_deg;
+  if (settings.engine == "GLOBAL_PRUNED") {
+    json["prune_distinctive_witness"] = settings.pruning.alignment.distinctive_witness_ratio;
+    json["prune_model_audit"] = settings.pruning.audit.enabled;
+  }
   json["seed"] = settings.seed;
   json["num_threads"] = settings.num_threads;
   json["stages"] = std::move(stages);
