@@ -342,6 +342,18 @@ TEST(EdgeDepthScale, OneExactEdgeGivesTheScaleBetweenTheFrames) {
 // is the twins', and no sample of the true edges has a scale. Their inliers are more distinctive
 // (the weights say so: 0.3 per inlier against 0.05), and the most distinctive edge's own depth
 // scale gives the true hypothesis.
+// Distinctive weights giving every edge of `true_edges` the share `true_share` per inlier and every
+// other edge `twin_share`.
+std::map<ViewPair, double> SharesByKind(const ViewGraph& graph, const std::vector<ViewPair>& true_edges,
+                                        double true_share, double twin_share) {
+  std::map<ViewPair, double> weights;
+  graph.ForEachValidEdge([&](const ViewPair& pair, const ViewGraphEdge& edge) {
+    const bool is_true = std::count(true_edges.begin(), true_edges.end(), pair) > 0;
+    weights[pair] = (is_true ? true_share : twin_share) * static_cast<double>(edge.matches.size());
+  });
+  return weights;
+}
+
 TEST(DistinctiveWitness, KeepsAMinorityOfTrueEdgesThatLandOnOneView) {
   PruningTestScene scene = MakePruningTestScene(16, 60, 11);
   const std::vector<ViewPair> true_edges = {{6, 8}, {7, 8}};
@@ -352,11 +364,7 @@ TEST(DistinctiveWitness, KeepsAMinorityOfTrueEdgesThatLandOnOneView) {
   for (const ViewPair& edge : twin_edges) scene.AddTwinEdge(edge.first, edge.second, twin);
   const SubgraphSolution k1 = scene.Solution(kViewsK1, RandomSimilarity(1, kScaleK1));
   const SubgraphSolution k2 = scene.Solution(kViewsK2, RandomSimilarity(2, kScaleK2));
-  std::map<ViewPair, double> weights;
-  scene.graph.ForEachValidEdge([&](const ViewPair& pair, const ViewGraphEdge& edge) {
-    const bool is_true = std::count(true_edges.begin(), true_edges.end(), pair) > 0;
-    weights[pair] = (is_true ? 0.3 : 0.05) * static_cast<double>(edge.matches.size());
-  });
+  const std::map<ViewPair, double> weights = SharesByKind(scene.graph, true_edges, 0.3, 0.05);
   SubgraphAlignmentOptions options;
   options.sample_fraction = 0.3;  // samples of two edges
   options.distinctive_witness_ratio = 0.5;
@@ -385,6 +393,40 @@ TEST(DistinctiveWitness, KeepsAMinorityOfTrueEdgesThatLandOnOneView) {
   EXPECT_EQ(AlignSubgraphPair(scene.graph, k1, k2, scene.views_and_intrinsics, scene.features, options, &weights)
                 .KeptEdges(),
             twin_edges);
+}
+
+// True edges that land on one view and are barely more distinctive than the twins (the share rule
+// alone would keep the twins): the witness's candidate joins RANSAC's before the coverage rule, which
+// rules out the twins (they match a third of what their placed views should see).
+TEST(DistinctiveWitness, JoinsTheCandidatesBeforeTheCoverageRule) {
+  PruningTestScene scene = MakePruningTestScene(16, 60, 11);
+  const std::vector<ViewPair> true_edges = {{5, 8}, {6, 8}, {7, 8}};
+  // As OutnumberedTrueEdges: the copy turned 90° puts j of a twin edge back along the arc, next to i,
+  // where it should see i's landmarks; the twin edges match a third of them.
+  const std::vector<ViewPair> twin_edges = {{0, 9}, {1, 9}, {1, 10}, {2, 10}, {3, 11}, {4, 12}, {5, 13}};
+  for (const ViewPair& edge : true_edges) scene.AddExactEdge(edge.first, edge.second);
+  Similarity twin;
+  twin.rotation = ExpSO3(DegToRad(90.0) * Eigen::Vector3d::UnitZ());
+  for (const ViewPair& edge : twin_edges) scene.AddTwinEdge(edge.first, edge.second, twin, 20);
+  const SubgraphSolution k1 = scene.Solution(kViewsK1, RandomSimilarity(1, kScaleK1));
+  const SubgraphSolution k2 = scene.Solution(kViewsK2, RandomSimilarity(2, kScaleK2));
+  const std::map<ViewPair, double> weights = SharesByKind(scene.graph, true_edges, 0.11, 0.10);
+  SubgraphAlignmentOptions options;
+  options.sample_fraction = 0.3;
+  options.distinctive_witness_ratio = 0.5;
+  const SubgraphAlignmentResult without =
+      AlignSubgraphPair(scene.graph, k1, k2, scene.views_and_intrinsics, scene.features, options);
+  EXPECT_EQ(without.KeptEdges(), twin_edges);
+  const SubgraphAlignmentResult with =
+      AlignSubgraphPair(scene.graph, k1, k2, scene.views_and_intrinsics, scene.features, options, &weights);
+  ASSERT_EQ(with.status, SubgraphAlignmentStatus::kAligned);
+  EXPECT_EQ(with.KeptEdges(), true_edges);
+  ASSERT_EQ(with.hypotheses.size(), 2u);
+  EXPECT_TRUE(with.hypotheses[1].distinctive_witness);
+  EXPECT_EQ(with.selected_hypothesis, 1);
+  EXPECT_LT(with.hypotheses[0].coverage_score, 0.0);  // the twins, ruled out by their coverage
+  EXPECT_GT(with.hypotheses[1].coverage_score, 0.0);
+  EXPECT_NEAR(with.beta, kTrueBeta, 1e-6);
 }
 
 // Where the selected consensus already contains the most distinctive edge nothing changes.

@@ -333,6 +333,17 @@ void RunRansac(const std::vector<ChainedRelativePose>& chains, const std::vector
     ApplyPolicyToVoters(result, InterSubgraphVerdict::kUnjudged, true);
     return;
   }
+  // The witness's own candidate joins the others when none of them holds it (real street at 0.08°:
+  // the true edges of a pair all land on one view, so RANSAC finds only the twins' candidate, and
+  // the coverage rule has nothing to compare it with).
+  int witness_candidate = witness_decides ? 0 : -1;
+  const bool witness_held = std::any_of(candidates.begin(), candidates.end(), [&](const Candidate& c) {
+    return witness.has_value() && c.consensus.inlier[witness_edge];
+  });
+  if (witness.has_value() && !witness_held) {
+    candidates.push_back(WitnessCandidate(chains, witness_edge, *distinctiveness[witness_edge].depth_scale, options));
+    witness_candidate = static_cast<int>(candidates.size()) - 1;
+  }
   size_t chosen = 0;
   for (size_t c = 0; c < candidates.size(); ++c) {
     AlignmentHypothesis summary;
@@ -340,7 +351,7 @@ void RunRansac(const std::vector<ChainedRelativePose>& chains, const std::vector
     summary.beta = candidates[c].hypothesis.beta;
     ScoreCoverage(candidates[c].consensus, coverage, options, &summary);
     summary.distinctive_share = ConsensusShare(candidates[c].consensus, distinctiveness);
-    summary.distinctive_witness = witness_decides;
+    summary.distinctive_witness = static_cast<int>(c) == witness_candidate;
     result->hypotheses.push_back(summary);
   }
   // Candidates whose edges miss more landmarks than the break-even are ruled out; the largest
@@ -364,19 +375,10 @@ void RunRansac(const std::vector<ChainedRelativePose>& chains, const std::vector
     const bool better = ruled_out[chosen] ? (!ruled_out[c] || larger) : (!ruled_out[c] && larger);
     if (better) chosen = c;
   }
-  if (witness.has_value() && !candidates[chosen].consensus.inlier[witness_edge]) {
-    Candidate candidate =
-        WitnessCandidate(chains, witness_edge, *distinctiveness[witness_edge].depth_scale, options);
-    AlignmentHypothesis summary;
-    summary.consensus_size = candidate.consensus.count;
-    summary.beta = candidate.hypothesis.beta;
-    ScoreCoverage(candidate.consensus, coverage, options, &summary);
-    summary.distinctive_share = ConsensusShare(candidate.consensus, distinctiveness);
-    summary.distinctive_witness = true;
-    const double chosen_share = result->hypotheses[chosen].distinctive_share;
-    result->hypotheses.push_back(summary);
-    candidates.push_back(std::move(candidate));
-    if (chosen_share < options.distinctive_witness_ratio * summary.distinctive_share) chosen = candidates.size() - 1;
+  if (witness_candidate >= 0 && !candidates[chosen].consensus.inlier[witness_edge]) {
+    const auto w = static_cast<size_t>(witness_candidate);
+    const double witness_share = result->hypotheses[w].distinctive_share;
+    if (result->hypotheses[chosen].distinctive_share < options.distinctive_witness_ratio * witness_share) chosen = w;
   }
   result->selected_hypothesis = static_cast<int>(chosen);
   const std::optional<Hypothesis> best = candidates[chosen].hypothesis;

@@ -93,10 +93,11 @@ struct SubgraphAlignmentOptions {
   // true edges are the most distinctive ones (their inliers include the unique texture; a twin
   // edge's only the repeated structure, which the views of every copy match): on the synthetic
   // street every twin edge has a share ≤ 0.062, the true edges of the thin stretches 0.14–0.32.
-  // So when the selected consensus leaves out the pair's most distinctive voting edge e* and its
-  // edges' distinctive share is below distinctive_witness_ratio times that of the consensus of
-  // e*'s own hypothesis (e*'s chained pose with its depth scale, edge_depth_scale.hpp, refitted on
-  // its consensus while that keeps e*), the latter decides the pair; and when no sample gives a
+  // So e*'s own hypothesis (e* = the pair's most distinctive voting edge; its chained pose at its
+  // depth scale, edge_depth_scale.hpp, refitted on its consensus while that keeps e*) joins the
+  // RANSAC candidates when none of them holds e*, before the coverage rule chooses; when the chosen
+  // consensus leaves e* out and its edges' distinctive share is below distinctive_witness_ratio
+  // times that of e*'s candidate, the latter decides the pair; and when no sample gives a
   // hypothesis any edge supports, e*'s decides before the rotation-only fallback. 0: off (the
   // default until every benchmark table is rerun with it; measured in docs/pruning.md, "The most
   // distinctive edge as a witness": the street with stars and a 0.08° verification 52.2 -> 90.5
