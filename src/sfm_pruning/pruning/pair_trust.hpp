@@ -38,6 +38,10 @@ class PairTrust {
   // see. -1 when none of them expected anything (or nothing inside did).
   double RelativeCoverageOf(const SubgraphAlignmentResult& alignment, bool all_edges) const;
 
+  // DistinctiveMatchWeights of `graph` (for every measure: the inter-subgraph alignment's witness
+  // uses them too, SubgraphAlignmentOptions::distinctive_witness_ratio).
+  const std::map<ViewPair, double>& EdgeWeights() const { return edge_weights_; }
+
   // What the edges inside the subgraphs show: the unit of the trust (0 when not measured).
   double ReferenceShare() const { return reference_share_; }
   double ReferenceCoverage() const { return reference_coverage_; }
@@ -47,7 +51,7 @@ class PairTrust {
 
   PairTrustMeasure measure_;
   const ViewGraph& graph_;
-  std::map<ViewPair, double> edge_weights_;  // DistinctiveMatchWeights (distinctive measures)
+  std::map<ViewPair, double> edge_weights_;  // DistinctiveMatchWeights
   double reference_share_ = 0.0;
   double reference_coverage_ = 0.0;
 };

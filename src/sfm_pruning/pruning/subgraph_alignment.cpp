@@ -117,9 +117,11 @@ struct Candidate {
   int iteration = -1;
 };
 
-// Local optimisation (Options::refine_rounds): refit on the whole consensus while it grows.
-void RefineOnConsensus(const std::vector<ChainedRelativePose>& chains, const Options& options, Candidate* candidate) {
-  for (int round = 0; round < options.refine_rounds; ++round) {
+// Refit on the whole consensus while it grows, at most `rounds` times (Options::refine_rounds for a
+// RANSAC winner) and, when `keep` is given, while the consensus still holds that edge (the witness).
+void RefineOnConsensus(const std::vector<ChainedRelativePose>& chains, const Options& options, int rounds,
+                       std::optional<size_t> keep, Candidate* candidate) {
+  for (int round = 0; round < rounds; ++round) {
     std::vector<size_t> members;
     for (size_t k = 0; k < chains.size(); ++k) {
       if (candidate->consensus.inlier[k]) members.push_back(k);
@@ -127,7 +129,7 @@ void RefineOnConsensus(const std::vector<ChainedRelativePose>& chains, const Opt
     const std::optional<Hypothesis> refit = FitHypothesis(chains, members, options);
     if (!refit) return;
     Consensus consensus = CountConsensus(chains, *refit, options);
-    if (consensus.count <= candidate->consensus.count) return;
+    if (consensus.count <= candidate->consensus.count || (keep && !consensus.inlier[*keep])) return;
     candidate->hypothesis = *refit;
     candidate->consensus = std::move(consensus);
   }
@@ -162,7 +164,7 @@ std::optional<Candidate> RansacOverPool(const std::vector<ChainedRelativePose>& 
                          consensus.total_error < best->consensus.total_error);
     if (better) best = Candidate{*hypothesis, std::move(consensus), iteration};
   }
-  if (best) RefineOnConsensus(chains, options, &*best);
+  if (best) RefineOnConsensus(chains, options, options.refine_rounds, std::nullopt, &*best);
   return best;
 }
 
@@ -269,18 +271,7 @@ Candidate WitnessCandidate(const std::vector<ChainedRelativePose>& chains, size_
   candidate.hypothesis.mean_translation = chains[witness].Translation(depth_scale);
   candidate.consensus = CountConsensus(chains, candidate.hypothesis, options);
   constexpr int kRefineRounds = 3;
-  for (int round = 0; round < kRefineRounds; ++round) {
-    std::vector<size_t> members;
-    for (size_t k = 0; k < chains.size(); ++k) {
-      if (candidate.consensus.inlier[k]) members.push_back(k);
-    }
-    const std::optional<Hypothesis> refit = FitHypothesis(chains, members, options);
-    if (!refit) break;
-    Consensus consensus = CountConsensus(chains, *refit, options);
-    if (!consensus.inlier[witness] || consensus.count <= candidate.consensus.count) break;
-    candidate.hypothesis = *refit;
-    candidate.consensus = std::move(consensus);
-  }
+  RefineOnConsensus(chains, options, kRefineRounds, witness, &candidate);
   return candidate;
 }
 

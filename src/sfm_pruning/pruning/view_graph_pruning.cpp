@@ -9,7 +9,6 @@
 #include "sfm_pruning/pruning/subgraph_cycle_consistency.hpp"
 #include "sfm_pruning/util/parallel_for.hpp"
 #include "sfm_pruning/util/statistics.hpp"
-#include "sfm_pruning/view_graph/distinctive_weights.hpp"
 #include "sfm_pruning/view_graph/components.hpp"
 
 namespace sfm_pruning {
@@ -193,10 +192,11 @@ void PruneViewGraph(const ViewGraphPruningOptions& options, ViewGraph* graph, co
   start = std::chrono::steady_clock::now();
   const std::vector<AcceptedSubgraph>& accepted = out.partition.accepted;
   const std::vector<std::pair<int, int>> pairs = ConnectedSubgraphPairs(*graph, accepted);
-  std::map<ViewPair, double> distinctive_weights;
-  if (options.alignment.distinctive_witness_ratio > 0.0) {
-    distinctive_weights = DistinctiveMatchWeights(component_graph, FeatureDistinctiveness(component_graph));
-  }
+  // Built before the alignment: its distinctive weights serve the alignment's witness too.
+  const PairTrust pair_trust(options.link_trust, component_graph, accepted, views_and_intrinsics,
+                             options.alignment.placement);
+  const std::map<ViewPair, double>* distinctive_weights =
+      options.alignment.distinctive_witness_ratio > 0.0 ? &pair_trust.EdgeWeights() : nullptr;
   std::vector<SubgraphAlignmentResult> alignments(pairs.size());
   ParallelFor(
       pairs.size(), options.num_threads,
@@ -209,14 +209,12 @@ void PruneViewGraph(const ViewGraphPruningOptions& options, ViewGraph* graph, co
         const bool second_places = s2.landmarks.size() > s1.landmarks.size();
         alignments[p] = AlignSubgraphPair(*graph, second_places ? s2 : s1, second_places ? s1 : s2,
                                           views_and_intrinsics, features, PairAlignmentOptions(options, num_edges),
-                                          distinctive_weights.empty() ? nullptr : &distinctive_weights);
+                                          distinctive_weights);
         if (second_places) ExpressFromTheFirstSubgraph(&alignments[p]);
       },
       progress, "inter-subgraph pruning");
 
   // 3. The loop check: a pair whose frame transform breaks the loops of subgraphs is cut whole.
-  const PairTrust pair_trust(options.link_trust, component_graph, accepted, views_and_intrinsics,
-                             options.alignment.placement);
   out.reference_distinctive_share = pair_trust.ReferenceShare();
   out.reference_coverage = pair_trust.ReferenceCoverage();
   std::vector<double> trust(pairs.size());
