@@ -170,6 +170,47 @@ std::vector<PairVerdict> JudgeAgainstTrustedForest(const std::vector<std::pair<i
   return verdicts;
 }
 
+// ViewGraphPruningOptions::unverified_rotation: every kKeptUnverified pair whose kept edges turn
+// away from a rotation averaging of the rest by more than the bound loses them.
+void CutUnverifiedPairsByRotation(const UnverifiedPairRotationOptions& options,
+                                  const std::vector<SubgraphAlignmentResult>& alignments, ViewGraph* graph,
+                                  ViewGraphPruningReport* out) {
+  std::vector<size_t> judged;
+  std::vector<std::vector<ViewPair>> groups;
+  for (size_t p = 0; p < out->pairs.size(); ++p) {
+    if (out->pairs[p].forest_decision != LinkDecision::kKeptUnverified) continue;
+    std::vector<ViewPair> kept;
+    for (const InterSubgraphEdgeDecision& decision : alignments[p].edges) {
+      const IndexT i = decision.placement.view_i;
+      const IndexT j = decision.placement.view_j;
+      if (graph->HasValidEdge(i, j)) kept.push_back(i < j ? ViewPair{i, j} : ViewPair{j, i});
+    }
+    if (kept.empty()) continue;
+    judged.push_back(p);
+    groups.push_back(std::move(kept));
+  }
+  if (groups.empty()) return;
+  const std::vector<double> errors = MedianRotationErrorsAgainstTheRest(*graph, groups, options.rotation);
+  for (size_t g = 0; g < groups.size(); ++g) {
+    SubgraphPairReport& pair = out->pairs[judged[g]];
+    pair.unverified_rotation_error_deg = errors[g];
+    if (!(errors[g] > options.max_median_error_deg)) continue;
+    pair.cut_by_rotation = true;
+    const EdgeInvalidation why{EdgeInvalidReason::kUnverifiedRotation, errors[g], options.max_median_error_deg};
+    for (const ViewPair& edge : groups[g]) {
+      graph->InvalidateEdge(edge.first, edge.second, why);
+      RemovedEdge removed;
+      removed.pair = edge;
+      removed.k1 = pair.k1;
+      removed.k2 = pair.k2;
+      removed.verdict = InterSubgraphVerdict::kUnverifiedRotation;
+      removed.invalidation = why;
+      out->removed_edges.push_back(removed);
+      ++pair.num_removed_edges;
+    }
+  }
+}
+
 }  // namespace
 
 void PruneViewGraph(const ViewGraphPruningOptions& options, ViewGraph* graph, const SfmData& views_and_intrinsics,
@@ -280,6 +321,13 @@ void PruneViewGraph(const ViewGraphPruningOptions& options, ViewGraph* graph, co
     }
   }
   out.timings.push_back({"inter-subgraph pruning", SecondsSince(start)});
+  if (options.unverified_rotation.max_median_error_deg > 0.0) {
+    start = std::chrono::steady_clock::now();
+    UnverifiedPairRotationOptions check = options.unverified_rotation;
+    check.rotation = options.partition.engine.rotation;
+    CutUnverifiedPairsByRotation(check, alignments, graph, &out);
+    out.timings.push_back({"rotation check of unverified pairs", SecondsSince(start)});
+  }
   out.num_output_edges = graph->NumValidEdges();
   out.total_seconds = SecondsSince(total_start);
 }

@@ -33,6 +33,7 @@
 #include "sfm_pruning/pruning/subgraph_alignment.hpp"
 #include "sfm_pruning/pruning/subgraph_loop_consistency.hpp"
 #include "sfm_pruning/pruning/trusted_link_forest.hpp"
+#include "sfm_pruning/pruning/unverified_pair_rotations.hpp"
 
 namespace sfm_pruning {
 
@@ -61,6 +62,10 @@ struct ViewGraphPruningOptions {
   // The pruning's decisions reviewed against the model solved from the pruned graph, then solved
   // again (off by default; applied by RunPrunedGlobalEngine, not PruneViewGraph).
   ModelEdgeAuditOptions audit;
+  // The pairs the trusted forest keeps unverified, judged by rotation against the rest of the pruned
+  // graph (unverified_pair_rotations.hpp; off when max_median_error_deg is 0). Its rotation averaging
+  // options are taken from partition.engine.rotation.
+  UnverifiedPairRotationOptions unverified_rotation;
 };
 
 struct SubgraphPairReport {
@@ -89,6 +94,10 @@ struct SubgraphPairReport {
   double coverage = -1.0;
   bool judged_by_forest = false;
   LinkDecision forest_decision = LinkDecision::kForest;
+  // kKeptUnverified pairs under ViewGraphPruningOptions::unverified_rotation: the median rotation
+  // error of its kept edges against the rest (-1: not measured), and whether that cut the pair.
+  double unverified_rotation_error_deg = -1.0;
+  bool cut_by_rotation = false;
 };
 
 struct RemovedEdge {

@@ -20,6 +20,8 @@ std::string EdgeInvalidReasonName(EdgeInvalidReason reason) {
       return "unverified_subgraph_pair";
     case EdgeInvalidReason::kModelDisagreement:
       return "model_disagreement";
+    case EdgeInvalidReason::kUnverifiedRotation:
+      return "unverified_rotation";
     case EdgeInvalidReason::kOther:
       return "other";
   }

@@ -182,6 +182,12 @@ void AddPruningOptions(CLI::App* cmd, sfm_pruning::ViewGraphPruningOptions* opti
                     "inside the subgraphs (when it can be measured)")
       ->check(CLI::NonNegativeNumber)
       ->capture_default_str();
+  group->add_option("--prune_unverified_max_rotation_deg", options->unverified_rotation.max_median_error_deg,
+                    "trusted_forest: a pair kept unverified is cut when its edges turn by more than this (median, "
+                    "degrees) against a rotation averaging of the rest of the pruned graph (0: off; catches "
+                    "false loops between opposite sides of a scene)")
+      ->check(CLI::NonNegativeNumber)
+      ->capture_default_str();
   group->add_option("--prune_min_edges_for_trust", loops.min_edges_for_trust,
                     "trusted_forest: subgraph pairs of fewer connecting edges are ranked after all the others")
       ->capture_default_str();
