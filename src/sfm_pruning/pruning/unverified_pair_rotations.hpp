@@ -24,7 +24,6 @@ namespace sfm_pruning {
 struct UnverifiedPairRotationOptions {
   // A pair whose edges' median rotation error exceeds this many degrees is cut; 0 = off.
   double max_median_error_deg = 0.0;
-  RotationAveragingOptions rotation;  // the averaging of the rest of the graph
 };
 
 // For every group of edges (one unverified pair's kept edges each): the median over its valid edges

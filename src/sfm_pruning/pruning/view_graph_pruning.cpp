@@ -172,7 +172,9 @@ std::vector<PairVerdict> JudgeAgainstTrustedForest(const std::vector<std::pair<i
 
 // ViewGraphPruningOptions::unverified_rotation: every kKeptUnverified pair whose kept edges turn
 // away from a rotation averaging of the rest by more than the bound loses them.
+// Their entries are appended to out->removed_edges after those of the pair decisions.
 void CutUnverifiedPairsByRotation(const UnverifiedPairRotationOptions& options,
+                                  const RotationAveragingOptions& rotation,
                                   const std::vector<SubgraphAlignmentResult>& alignments, ViewGraph* graph,
                                   ViewGraphPruningReport* out) {
   std::vector<size_t> judged;
@@ -190,7 +192,7 @@ void CutUnverifiedPairsByRotation(const UnverifiedPairRotationOptions& options,
     groups.push_back(std::move(kept));
   }
   if (groups.empty()) return;
-  const std::vector<double> errors = MedianRotationErrorsAgainstTheRest(*graph, groups, options.rotation);
+  const std::vector<double> errors = MedianRotationErrorsAgainstTheRest(*graph, groups, rotation);
   for (size_t g = 0; g < groups.size(); ++g) {
     SubgraphPairReport& pair = out->pairs[judged[g]];
     pair.unverified_rotation_error_deg = errors[g];
@@ -323,9 +325,8 @@ void PruneViewGraph(const ViewGraphPruningOptions& options, ViewGraph* graph, co
   out.timings.push_back({"inter-subgraph pruning", SecondsSince(start)});
   if (options.unverified_rotation.max_median_error_deg > 0.0) {
     start = std::chrono::steady_clock::now();
-    UnverifiedPairRotationOptions check = options.unverified_rotation;
-    check.rotation = options.partition.engine.rotation;
-    CutUnverifiedPairsByRotation(check, alignments, graph, &out);
+    CutUnverifiedPairsByRotation(options.unverified_rotation, options.partition.engine.rotation, alignments, graph,
+                                 &out);
     out.timings.push_back({"rotation check of unverified pairs", SecondsSince(start)});
   }
   out.num_output_edges = graph->NumValidEdges();

@@ -63,8 +63,8 @@ struct ViewGraphPruningOptions {
   // again (off by default; applied by RunPrunedGlobalEngine, not PruneViewGraph).
   ModelEdgeAuditOptions audit;
   // The pairs the trusted forest keeps unverified, judged by rotation against the rest of the pruned
-  // graph (unverified_pair_rotations.hpp; off when max_median_error_deg is 0). Its rotation averaging
-  // options are taken from partition.engine.rotation.
+  // graph (unverified_pair_rotations.hpp; off when max_median_error_deg is 0), averaged with the
+  // rotation options of partition.engine.
   UnverifiedPairRotationOptions unverified_rotation;
 };
 
@@ -111,7 +111,7 @@ struct RemovedEdge {
 struct ViewGraphPruningReport {
   RecursivePartitionResult partition;
   std::vector<SubgraphPairReport> pairs;  // connected pairs only, (k1, k2) order
-  std::vector<RemovedEdge> removed_edges;  // pair order, then (i, j) order
+  std::vector<RemovedEdge> removed_edges;  // pair order, then (i, j) order; then the rotation check's and the audit's
   std::vector<SubgraphTriangle> triangles;  // loops of aligned pairs (subgraph_loop_consistency.hpp)
   std::vector<SubgraphCycle> cycles;        // longer cycles judged (subgraph_cycle_consistency.hpp)
   // PairTrust::ReferenceShare and ReferenceCoverage: the units of the pairs' trust (0 when the
