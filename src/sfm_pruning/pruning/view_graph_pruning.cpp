@@ -68,6 +68,21 @@ struct PairVerdict {
   EdgeInvalidation invalidation;   // when cut
 };
 
+// Invalidates the edge `pair` (first < second) with `why` and records it in `removed`; false, and
+// nothing recorded, when it was already invalid. k1 / k2: its subgraphs, -1 when not recorded.
+bool RemoveEdge(const ViewPair& pair, int k1, int k2, InterSubgraphVerdict verdict, const EdgeInvalidation& why,
+                ViewGraph* graph, std::vector<RemovedEdge>* removed) {
+  if (!graph->InvalidateEdge(pair.first, pair.second, why)) return false;
+  RemovedEdge entry;
+  entry.pair = pair;
+  entry.k1 = k1;
+  entry.k2 = k2;
+  entry.verdict = verdict;
+  entry.invalidation = why;
+  removed->push_back(entry);
+  return true;
+}
+
 // Whether the pair's transform can take part in a loop: a transform no connecting edge agrees with
 // is no evidence (real street: two such pairs, fitted on samples of doppelgangers, closed a
 // triangle with each other).
@@ -200,15 +215,10 @@ void CutUnverifiedPairsByRotation(const UnverifiedPairRotationOptions& options,
     pair.cut_by_rotation = true;
     const EdgeInvalidation why{EdgeInvalidReason::kUnverifiedRotation, errors[g], options.max_median_error_deg};
     for (const ViewPair& edge : groups[g]) {
-      graph->InvalidateEdge(edge.first, edge.second, why);
-      RemovedEdge removed;
-      removed.pair = edge;
-      removed.k1 = pair.k1;
-      removed.k2 = pair.k2;
-      removed.verdict = InterSubgraphVerdict::kUnverifiedRotation;
-      removed.invalidation = why;
-      out->removed_edges.push_back(removed);
-      ++pair.num_removed_edges;
+      if (RemoveEdge(edge, pair.k1, pair.k2, InterSubgraphVerdict::kUnverifiedRotation, why, graph,
+                     &out->removed_edges)) {
+        ++pair.num_removed_edges;
+      }
     }
   }
 }
@@ -309,17 +319,12 @@ void PruneViewGraph(const ViewGraphPruningOptions& options, ViewGraph* graph, co
       const EdgeInvalidation why =
           verdict.cut && decision.verdict == verdict.reason ? verdict.invalidation
                                                             : InterSubgraphInvalidation(decision, options.alignment);
-      if (!graph->InvalidateEdge(decision.placement.view_i, decision.placement.view_j, why)) continue;
-      RemovedEdge removed;
-      removed.pair = decision.placement.view_i < decision.placement.view_j
-                         ? ViewPair{decision.placement.view_i, decision.placement.view_j}
-                         : ViewPair{decision.placement.view_j, decision.placement.view_i};
-      removed.k1 = k1;
-      removed.k2 = k2;
-      removed.verdict = decision.verdict;
-      removed.invalidation = why;
-      out.removed_edges.push_back(removed);
-      ++pair_report.num_removed_edges;
+      const IndexT i = decision.placement.view_i;
+      const IndexT j = decision.placement.view_j;
+      if (RemoveEdge(i < j ? ViewPair{i, j} : ViewPair{j, i}, k1, k2, decision.verdict, why, graph,
+                     &out.removed_edges)) {
+        ++pair_report.num_removed_edges;
+      }
     }
   }
   out.timings.push_back({"inter-subgraph pruning", SecondsSince(start)});
@@ -374,12 +379,7 @@ bool ApplyAudit(const ModelEdgeAuditOptions& options, ViewGraph* pruned, PrunedG
       changed = true;
     } else if (edge->is_valid && agreement.Share() < options.keep_agreement) {
       const EdgeInvalidation why{EdgeInvalidReason::kModelDisagreement, agreement.Share(), options.keep_agreement};
-      pruned->InvalidateEdge(agreement.pair.first, agreement.pair.second, why);
-      RemovedEdge entry_added;
-      entry_added.pair = agreement.pair;
-      entry_added.verdict = InterSubgraphVerdict::kModelDisagreement;
-      entry_added.invalidation = why;
-      removed.push_back(entry_added);
+      RemoveEdge(agreement.pair, -1, -1, InterSubgraphVerdict::kModelDisagreement, why, pruned, &removed);
       ++result->pruning.audit_removed;
       changed = true;
     }
