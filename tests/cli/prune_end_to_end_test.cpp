@@ -115,6 +115,32 @@ TEST(CliPruneEndToEnd, DatabaseLosesExactlyTheRemovedPairsAndRunsAreReproducible
       << ")";
 }
 
+TEST(CliPruneEndToEnd, ReportListsEachViolationOfAnInconsistentCommunity) {
+  // Weighted by raw inliers, Louvain groups views of the twin faces, and that community fails.
+  const fs::path scratch = ScratchDir("cli_prune_violations");
+  const CommandResult result =
+      RunPrunesfm({"prune", "--database", (OrbitProject() / "verified.db").string(), "--output",
+                   (scratch / "pruned.db").string(), "--seed", "5", "--prune_partition_weight", "inliers"});
+  ASSERT_EQ(result.exit_code, 0) << result.err;
+  const nlohmann::json report = nlohmann::json::parse(std::ifstream(scratch / "pruned.pruning_report.json"));
+  size_t listed = 0;
+  for (const nlohmann::json& node : report.at("tree")) {
+    if (!node.contains("violation_list")) continue;
+    size_t counted = 0;
+    for (const auto& [test, count] : node.at("violations").items()) counted += count.get<size_t>();
+    EXPECT_EQ(node.at("violation_list").size(), counted) << node.dump();
+    const std::set<IndexT> views(node.at("view_ids").begin(), node.at("view_ids").end());
+    for (const nlohmann::json& v : node.at("violation_list")) {
+      ++listed;
+      EXPECT_GT(v.at("value_deg").get<double>(), v.at("threshold_deg").get<double>()) << v.dump();
+      for (const nlohmann::json& view : v.at(v.at("test") == "loop" ? "loop" : "edge")) {
+        EXPECT_EQ(views.count(view.get<IndexT>()), 1u) << v.dump();
+      }
+    }
+  }
+  EXPECT_GT(listed, 0u);
+}
+
 TEST(CliPruneEndToEnd, OpenMvgMatchFileLosesExactlyTheRemovedPairs) {
   const fs::path scratch = ScratchDir("cli_prune_openmvg");
   const fs::path output = scratch / "matches.pruned.txt";

@@ -1,6 +1,7 @@
 #include "software/commands/pruning_report_json.hpp"
 
 #include <cstdio>
+#include <vector>
 
 #include "sfm_pruning/util/atomic_file.hpp"
 
@@ -8,6 +9,24 @@ namespace prunesfm {
 namespace {
 
 nlohmann::json ViewPairJson(const sfm_pruning::ViewPair& pair) { return nlohmann::json::array({pair.first, pair.second}); }
+
+// Each violation of a node's consistency tests: which test, on which edge or loop, by how much.
+nlohmann::json ViolationsJson(const std::vector<sfm_pruning::ConsistencyViolation>& violations) {
+  using sfm_pruning::ConsistencyTest;
+  nlohmann::json list = nlohmann::json::array();
+  for (const sfm_pruning::ConsistencyViolation& v : violations) {
+    nlohmann::json entry = {{"test", sfm_pruning::ConsistencyTestName(v.test)},
+                            {"value_deg", v.value_deg},
+                            {"threshold_deg", v.threshold_deg}};
+    if (v.test == ConsistencyTest::kLoop) {
+      entry["loop"] = v.loop;
+    } else {
+      entry["edge"] = ViewPairJson(v.edge);
+    }
+    list.push_back(std::move(entry));
+  }
+  return list;
+}
 
 }  // namespace
 
@@ -39,6 +58,7 @@ nlohmann::json PruningReportJson(const sfm_pruning::ViewGraphPruningReport& prun
       for (const ConsistencyViolation& v : node.consistency.violations) ++counts[static_cast<int>(v.test)];
       entry["consistent"] = node.consistency.consistent;
       entry["violations"] = {{"loop", counts[0]}, {"relative_rotation", counts[1]}, {"relative_translation", counts[2]}};
+      entry["violation_list"] = ViolationsJson(node.consistency.violations);
       entry["loop_error"] = summary(node.consistency.loop_error);
       entry["relative_rotation_error"] = summary(node.consistency.relative_rotation_error);
       entry["relative_translation_error"] = summary(node.consistency.relative_translation_error);
