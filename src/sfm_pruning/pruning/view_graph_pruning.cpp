@@ -73,13 +73,7 @@ struct PairVerdict {
 bool RemoveEdge(const ViewPair& pair, int k1, int k2, InterSubgraphVerdict verdict, const EdgeInvalidation& why,
                 ViewGraph* graph, std::vector<RemovedEdge>* removed) {
   if (!graph->InvalidateEdge(pair.first, pair.second, why)) return false;
-  RemovedEdge entry;
-  entry.pair = pair;
-  entry.k1 = k1;
-  entry.k2 = k2;
-  entry.verdict = verdict;
-  entry.invalidation = why;
-  removed->push_back(entry);
+  removed->push_back({pair, k1, k2, verdict, why});
   return true;
 }
 
@@ -198,9 +192,8 @@ void CutUnverifiedPairsByRotation(const UnverifiedPairRotationOptions& options,
     if (out->pairs[p].forest_decision != LinkDecision::kKeptUnverified) continue;
     std::vector<ViewPair> kept;
     for (const InterSubgraphEdgeDecision& decision : alignments[p].edges) {
-      const IndexT i = decision.placement.view_i;
-      const IndexT j = decision.placement.view_j;
-      if (graph->HasValidEdge(i, j)) kept.push_back(i < j ? ViewPair{i, j} : ViewPair{j, i});
+      const ViewPair edge = MakeViewPair(decision.placement.view_i, decision.placement.view_j);
+      if (graph->HasValidEdge(edge.first, edge.second)) kept.push_back(edge);
     }
     if (kept.empty()) continue;
     judged.push_back(p);
@@ -319,10 +312,8 @@ void PruneViewGraph(const ViewGraphPruningOptions& options, ViewGraph* graph, co
       const EdgeInvalidation why =
           verdict.cut && decision.verdict == verdict.reason ? verdict.invalidation
                                                             : InterSubgraphInvalidation(decision, options.alignment);
-      const IndexT i = decision.placement.view_i;
-      const IndexT j = decision.placement.view_j;
-      if (RemoveEdge(i < j ? ViewPair{i, j} : ViewPair{j, i}, k1, k2, decision.verdict, why, graph,
-                     &out.removed_edges)) {
+      if (RemoveEdge(MakeViewPair(decision.placement.view_i, decision.placement.view_j), k1, k2, decision.verdict,
+                     why, graph, &out.removed_edges)) {
         ++pair_report.num_removed_edges;
       }
     }
