@@ -47,6 +47,19 @@ std::vector<IndexT> UnregisterWeakViews(size_t min_observations, SfmData* scene)
   return {weak.begin(), weak.end()};
 }
 
+// Both positioning methods solve with Ceres under the engine's seed, threads, tolerances and
+// progress; their own options keep only what differs (loss, scale bound, rejection rounds).
+PositioningSolverOptions WithEngineSolverSettings(const GlobalEngineOptions& options, PositioningSolverOptions solver,
+                                                  const ProgressCallback& progress) {
+  solver.seed = options.seed;
+  solver.num_threads = options.num_threads;
+  solver.function_tolerance = options.positioning_function_tolerance;
+  solver.max_num_iterations = options.positioning_max_num_iterations;
+  solver.max_num_resolve_iterations = options.positioning_max_num_resolve_iterations;
+  solver.progress = progress;
+  return solver;
+}
+
 bool Fail(const std::string& message, GlobalEngineReport* report) {
   report->success = false;
   report->message = message;
@@ -89,12 +102,7 @@ bool RunStages(const GlobalEngineOptions& options, const ViewGraph& graph, const
   Timed("positioning", report, [&]() {
     if (options.positioning == PositioningMethod::kGlobalPositioning) {
       GlobalPositioningOptions positioning = options.global_positioning;
-      positioning.solver.seed = options.seed;
-      positioning.solver.num_threads = options.num_threads;
-      positioning.solver.function_tolerance = options.positioning_function_tolerance;
-      positioning.solver.max_num_iterations = options.positioning_max_num_iterations;
-      positioning.solver.max_num_resolve_iterations = options.positioning_max_num_resolve_iterations;
-      positioning.solver.progress = progress;
+      positioning.solver = WithEngineSolverSettings(options, positioning.solver, progress);
       const bool on_stars = options.positioning_tracks == PositioningTracks::kMatchStars;
       const std::vector<Track> stars = on_stars ? BuildMatchStarTracks(kept, track_options.min_track_length)
                                                 : std::vector<Track>{};
@@ -102,12 +110,7 @@ bool RunStages(const GlobalEngineOptions& options, const ViewGraph& graph, const
                                                      on_stars ? &stars : nullptr);
     } else {
       TranslationAveragingOptions averaging = options.translation_averaging;
-      averaging.solver.seed = options.seed;
-      averaging.solver.num_threads = options.num_threads;
-      averaging.solver.function_tolerance = options.positioning_function_tolerance;
-      averaging.solver.max_num_iterations = options.positioning_max_num_iterations;
-      averaging.solver.max_num_resolve_iterations = options.positioning_max_num_resolve_iterations;
-      averaging.solver.progress = progress;
+      averaging.solver = WithEngineSolverSettings(options, averaging.solver, progress);
       report->positioning =
           PositionCamerasByTranslationAveraging(averaging, kept, rotations, tracks.tracks, features, out).positioning;
     }
