@@ -25,7 +25,8 @@ import oracle_pruning_bench as ob  # noqa: E402
 import run_benchmarks as rb  # noqa: E402
 
 DEFAULT_SCENES = ["street", "courtyard", "orbit_symmetric",
-                  "sequential_large_250=sequential_large:--num_views 250"]
+                  "sequential_large_250=sequential_large:--num_views 250",
+                  "sequential_large_1000=sequential_large:--num_views 1000"]
 INSIDE = "inside one subgraph"
 
 
