@@ -43,6 +43,11 @@ def parse_scene(spec):
     return label, scene or label, shlex.split(extra)
 
 
+def view_index(name):
+    """view_00012.jpg -> 12: the index of a synthetic view, as synthetic_scene.json and the labels use it."""
+    return int(Path(name).stem.split("_")[-1])
+
+
 def twin_dominated_pairs(scene_json, ratio):
     stats = json.loads(Path(scene_json).read_text())["pairs"]
     return {(p["i"], p["j"]) for p in stats if p["twin"] > ratio * p["true"]}, len(stats)
@@ -52,7 +57,7 @@ def delete_pairs(database, pairs, tables=("matches",)):
     """Deletes the rows of `pairs` (view indices = the number in view_NNNNN.jpg) from `tables`; returns
     how many pairs had rows in the first of them."""
     db = sqlite3.connect(database)
-    view_of = {image_id: int(Path(name).stem.split("_")[-1]) for image_id, name in db.execute(
+    view_of = {image_id: view_index(name) for image_id, name in db.execute(
         "SELECT image_id, name FROM images")}
     deleted = 0
     for (pair_id,) in list(db.execute(f"SELECT pair_id FROM {tables[0]}")):
@@ -85,7 +90,7 @@ def delete_twin_matches(database, features, keep_fraction=0.0, seed=0):
     returns (twin matches deleted, matches before)."""
     rng = random.Random(seed)
     db = sqlite3.connect(database)
-    view_of = {image_id: int(Path(name).stem.split("_")[-1]) for image_id, name in db.execute(
+    view_of = {image_id: view_index(name) for image_id, name in db.execute(
         "SELECT image_id, name FROM images")}
     deleted = total = 0
     for pair_id, rows, cols, blob in list(db.execute("SELECT pair_id, rows, cols, data FROM matches")):

@@ -30,11 +30,6 @@ DEFAULT_SCENES = ["street", "courtyard", "orbit_symmetric",
 INSIDE = "inside one subgraph"
 
 
-def view_index(name):
-    """view_00012.jpg -> 12, the index synthetic_scene.json uses."""
-    return int(Path(name).stem.split("_")[-1])
-
-
 def pair_classes(report):
     """(k1, k2) -> the decision that kept or removed the pair's edges, e.g. 'aligned, forest'."""
     classes = {}
@@ -47,20 +42,17 @@ def pair_classes(report):
 
 
 def count_decisions(run_dir, scene_json):
-    """Counter of (decision, 'true'|'twin', 'kept'|'removed') over the verified edges of a run."""
-    labels = {(p["i"], p["j"]): "twin" if p["twin"] > p["true"] else "true"
-              for p in json.loads(Path(scene_json).read_text())["pairs"]}
+    """Counter of (decision, 'true'|'twin', 'kept'|'removed') over the verified edges of a run; twin =
+    twin-dominated by the oracle's rule (oracle_pruning_bench.twin_dominated_pairs)."""
+    twin_pairs, _ = ob.twin_dominated_pairs(scene_json, 1.0)
     graph = json.loads((run_dir / "view_graph.json").read_text())
     report = json.loads((run_dir / "pruning_report.json").read_text())
-    index_of = {v["view_id"]: view_index(v["image"]) for v in graph["views"]}
+    index_of = {v["view_id"]: ob.view_index(v["image"]) for v in graph["views"]}
     subgraph_of = {v["view_id"]: v["subgraph"] for v in graph["views"]}
     classes = pair_classes(report)
     counts = Counter()
     for edge in graph["edges"]:
-        a, b = sorted((index_of[edge["i"]], index_of[edge["j"]]))
-        label = labels.get((a, b))
-        if label is None:
-            continue  # a pair the generator did not label (none in practice)
+        label = "twin" if tuple(sorted((index_of[edge["i"]], index_of[edge["j"]]))) in twin_pairs else "true"
         ka, kb = subgraph_of[edge["i"]], subgraph_of[edge["j"]]
         decision = INSIDE if ka == kb else classes.get(tuple(sorted((ka, kb))), "between, no pair entry")
         counts[(decision, label, "removed" if edge["removed"] else "kept")] += 1
@@ -69,9 +61,8 @@ def count_decisions(run_dir, scene_json):
 
 def scene_lines(label, counts, evaluation):
     decisions = sorted({d for d, _, _ in counts}, key=lambda d: (d != INSIDE, d))
-    auc = evaluation["auc"] if evaluation else None
-    head = (f"**{label}**: AUC@10 {auc['10']:.1f} ({evaluation['registered']}/{evaluation['num_reference']})"
-            if auc else f"**{label}**: no model")
+    head = (f"**{label}**: AUC@10 {evaluation['auc']['10']:.1f} "
+            f"({evaluation['registered']}/{evaluation['num_reference']})")
     twin_kept = sum(n for (d, lab, fate), n in counts.items() if lab == "twin" and fate == "kept")
     true_removed = sum(n for (d, lab, fate), n in counts.items() if lab == "true" and fate == "removed")
     lines = ["", f"{head}; twin-dominated edges kept {twin_kept}, true edges removed {true_removed}.", "",
