@@ -1,16 +1,21 @@
 #!/usr/bin/env python3
-"""How much GLOBAL_PRUNED's result on the real ambiguous scenes depends on the seed (Louvain's
-visiting order, the RANSAC samples, every engine run). Writes bench/sections/seed_sweep.md.
+"""How much GLOBAL_PRUNED's result depends on the seed (Louvain's visiting order, the RANSAC
+samples, every engine run's random start). Writes bench/sections/seed_sweep.md, or with
+--synthetic bench/sections/seed_sweep_synthetic.md.
 
-Input: the exhaustive databases and sequential references bench/ambiguous_bench.py prepared in
-its --work folder (run it first, --prepare_only is enough). For every scene and every seed in
---seeds, `prunesfm run --engine GLOBAL_PRUNED --seed S --num_threads --threads` with each
---variant's extra arguments (default: the defaults, and session 14's pruning: the inlier-weighted
-partition and the triangle vote), scored by `prunesfm evaluate` against the reference.
-Python 3 standard library only.
+Real scenes (--scenes, default books,street): the exhaustive databases and sequential references
+bench/ambiguous_bench.py prepared in its --work folder (run it first, --prepare_only is enough),
+scored by AUC@5 against the reference (success: ≥ 90, issue 5's target).
+Synthetic scenes (--synthetic, e.g. street): `prunesfm synth --scene S --seed SEED` once (--seed), scored
+by AUC@10 against the ground truth (success: ≥ 95, issue 5's target).
+For every scene and every seed in --seeds, `prunesfm run --engine GLOBAL_PRUNED --seed S
+--num_threads --threads` with each --variant's extra arguments (default: the defaults, and session
+14's pruning: the inlier-weighted partition and the triangle vote; with --synthetic: the defaults
+and the street configuration of docs/pruning.md). Python 3 standard library only.
 """
 
 import json
+import re
 import shlex
 import sys
 from pathlib import Path
@@ -24,17 +29,46 @@ DEFAULT_VARIANTS = [
     "session 14 (inlier partition, triangle vote)=--prune_partition_weight inliers --prune_link_trust match_coverage "
     "--prune_loop_method triangle_vote",
 ]
+SYNTHETIC_VARIANTS = [
+    "defaults=",
+    "street configuration=--positioning_tracks MATCH_STARS --max_epipolar_error_deg 0.08 "
+    "--prune_distinctive_witness 0.5 --prune_model_audit true",
+]
+
+
+def real_scene(args, scene):
+    """(database, images, reference) of a real scene prepared by bench/ambiguous_bench.py."""
+    prepared = Path(args.ambiguous_work) / scene
+    database, reference = prepared / "exhaustive.db", prepared / "reference" / "sparse" / "0"
+    if not database.is_file() or not reference.is_dir():
+        sys.exit(f"seed_sweep_bench: {database} or {reference} missing (run bench/ambiguous_bench.py first)")
+    return database, Path(args.shared) / "datasets" / "ambiguous" / scene / "images", reference
+
+
+def synthetic_scene(args, prunesfm, scene):
+    """(database, images, ground truth) of `prunesfm synth --scene scene`, made once in --work."""
+    out = Path(args.work) / "synthetic" / scene / "data"
+    gt = out / "ground_truth" / "gt_cameras.txt"
+    if not gt.is_file():
+        stage = rb.run_stage("synth", [prunesfm, "synth", "--scene", scene, "--seed", args.seed, "--output", out,
+                                       "--num_threads", args.threads], Path(args.work) / f"{scene}_synth.log",
+                             args.timeout)
+        if stage["rc"] != 0:
+            sys.exit(f"seed_sweep_bench: prunesfm synth --scene {scene} failed (see {args.work}/{scene}_synth.log)")
+    (out / "images").mkdir(exist_ok=True)  # synth writes no images; `run --database` wants the folder
+    return out / "database.db", out / "images", gt
 
 
 def main():
     parser = bs.argument_parser(__doc__, "/tmp/prunesfm-seed-sweep")
     parser.add_argument("--ambiguous_work", default="/tmp/prunesfm-bench-ambiguous",
                         help="bench/ambiguous_bench.py's --work (exhaustive.db and reference/ per scene)")
-    parser.add_argument("--scenes", default="books,street")
+    parser.add_argument("--scenes", default="books,street", help="real scenes (bench/ambiguous_bench.py)")
+    parser.add_argument("--synthetic", default="", help="synthetic scenes instead, e.g. street,courtyard")
     parser.add_argument("--seeds", default="0-9", help="a range A-B or a comma-separated list")
     parser.add_argument("--variant", action="append", default=[], metavar="LABEL=ARGS",
                         help="a row LABEL with these extra `prunesfm run` arguments (repeatable)")
-    parser.add_argument("--target", type=float, default=90.0, help="AUC@5 counted as a success")
+    parser.add_argument("--target", type=float, help="AUC counted as a success (default: 90 real, 95 synthetic)")
     args = parser.parse_args()
     prunesfm = str(Path(args.prunesfm).resolve()) if args.prunesfm else str(rb.find_prunesfm(None))
     if "-" in args.seeds:
@@ -42,23 +76,28 @@ def main():
         seeds = list(range(first, last + 1))
     else:
         seeds = [int(x) for x in args.seeds.split(",")]
-    variants = [v.split("=", 1) for v in (args.variant or DEFAULT_VARIANTS)]
-    lines = bs.header_lines("Seed sweep on the real ambiguous scenes", sys.argv, prunesfm)
-    lines += [f"GLOBAL_PRUNED with `--seed S --num_threads {args.threads}` for S in {seeds[0]}..{seeds[-1]} on each "
-              "scene's exhaustive COLMAP database, AUC@5 against the sequential reference "
-              f"(bench/ambiguous_bench.py); success = AUC@5 ≥ {args.target:g}.", "",
-              "| scene | pruning | AUC@5 per seed | successes |", "|---|---|---|---|"]
+    synthetic = [s for s in args.synthetic.split(",") if s]
+    default_variants = SYNTHETIC_VARIANTS if synthetic else DEFAULT_VARIANTS
+    variants = [v.split("=", 1) for v in (args.variant or default_variants)]
+    auc_key, target = ("10", 95.0) if synthetic else ("5", 90.0)
+    target = args.target if args.target is not None else target
+    title = "Seed sweep on synthetic scenes" if synthetic else "Seed sweep on the real ambiguous scenes"
+    lines = bs.header_lines(title, sys.argv, prunesfm)
+    scored = (f"`prunesfm synth --scene S --seed {args.seed}`, AUC@{auc_key} against its ground truth" if synthetic
+              else f"each scene's exhaustive COLMAP database, AUC@{auc_key} against the sequential reference "
+                   "(bench/ambiguous_bench.py)")
+    lines += [f"GLOBAL_PRUNED with `--seed S --num_threads {args.threads}` for S in {seeds[0]}..{seeds[-1]} on "
+              f"{scored}; success = AUC@{auc_key} ≥ {target:g}.", "",
+              f"| scene | pruning | AUC@{auc_key} per seed | successes |", "|---|---|---|---|"]
+    base = Path(args.work) / "synthetic" if synthetic else Path(args.work)
     results = {}
-    for scene in [s for s in args.scenes.split(",") if s]:
-        prepared = Path(args.ambiguous_work) / scene
-        database, reference = prepared / "exhaustive.db", prepared / "reference" / "sparse" / "0"
-        images = Path(args.shared) / "datasets" / "ambiguous" / scene / "images"
-        if not database.is_file() or not reference.is_dir():
-            sys.exit(f"seed_sweep_bench: {database} or {reference} missing (run bench/ambiguous_bench.py first)")
+    for scene in synthetic or [s for s in args.scenes.split(",") if s]:
+        database, images, reference = (synthetic_scene(args, prunesfm, scene) if synthetic
+                                       else real_scene(args, scene))
         for label, extra in variants:
             aucs = []
             for seed in seeds:
-                out = Path(args.work) / scene / f"{label.split()[0]}_{seed}"
+                out = base / scene / f"{re.sub(r'[^A-Za-z0-9]+', '_', label).strip('_')}_{seed}"
                 out.mkdir(parents=True, exist_ok=True)
                 db = out / "database.db"
                 rb.copy_database(database, db)
@@ -68,14 +107,14 @@ def main():
                 stage = rb.run_stage("run", argv, out / "run.log", args.timeout)
                 model = out / "result" / "sparse" / "0" if stage["rc"] == 0 else None
                 result = bs.evaluate_against(prunesfm, model, reference, out, str(args.seed), args.timeout)
-                aucs.append(result["auc"]["5"])
-                print(f"{scene} {label} seed {seed}: AUC@5 {aucs[-1]:.1f}", flush=True)
-            successes = sum(a >= args.target for a in aucs)
+                aucs.append(result["auc"][auc_key])
+                print(f"{scene} {label} seed {seed}: AUC@{auc_key} {aucs[-1]:.1f}", flush=True)
+            successes = sum(a >= target for a in aucs)
             results.setdefault(scene, {})[label] = aucs
             lines.append(f"| {scene} | {label}{(' `' + extra + '`') if extra else ''} | "
                          f"{', '.join(f'{a:.1f}' for a in aucs)} | {successes} of {len(aucs)} |")
-    (Path(args.work) / "results.json").write_text(json.dumps(results, indent=2) + "\n")
-    bs.write_fragment("seed_sweep", lines)
+    (base / "results.json").write_text(json.dumps(results, indent=2) + "\n")
+    bs.write_fragment("seed_sweep_synthetic" if synthetic else "seed_sweep", lines)
     return 0
 
 

@@ -440,6 +440,7 @@ const char* InterSubgraphVerdictName(InterSubgraphVerdict verdict) {
     case InterSubgraphVerdict::kUnverified: return "unverified";
     case InterSubgraphVerdict::kModelDisagreement: return "model_disagreement";
     case InterSubgraphVerdict::kUnverifiedRotation: return "unverified_rotation";
+    case InterSubgraphVerdict::kLandmarkDisagreement: return "landmark_disagreement";
   }
   return "unknown";
 }

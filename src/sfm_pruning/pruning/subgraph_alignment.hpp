@@ -141,6 +141,8 @@ enum class InterSubgraphVerdict {
                           // the pruned graph (model_edge_audit.hpp)
   kUnverifiedRotation,    // removed with its whole pair: kept unverified by the forest, refuted by a
                           // rotation averaging of the rest (unverified_pair_rotations.hpp)
+  kLandmarkDisagreement,  // kept by the pruning, but too few of its matches agree with the two
+                          // subgraphs' landmarks (landmark_match_check.hpp)
 };
 
 const char* InterSubgraphVerdictName(InterSubgraphVerdict verdict);

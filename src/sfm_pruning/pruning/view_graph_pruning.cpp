@@ -216,6 +216,28 @@ void CutUnverifiedPairsByRotation(const UnverifiedPairRotationOptions& options,
   }
 }
 
+// The landmark check on every pair with a frame transform (its kept edges agree with it); edges
+// left with too few matches are removed with their pair's indices.
+void CheckMatchesOfAlignedPairs(const LandmarkMatchCheckOptions& options, const SfmData& views_and_intrinsics,
+                                const FeaturesPerView& features, ViewGraph* graph, ViewGraphPruningReport* out) {
+  std::vector<AlignedSubgraphs> aligned;
+  for (const SubgraphPairReport& pair : out->pairs) {
+    if (pair.has_frame_transform) aligned.push_back({pair.k1, pair.k2, pair.k2_to_k1});
+  }
+  out->landmark_check =
+      CheckMatchesAgainstLandmarks(options, out->partition.accepted, aligned, views_and_intrinsics, features, graph);
+  std::map<IndexT, int> subgraph_of;
+  for (size_t k = 0; k < out->partition.accepted.size(); ++k) {
+    for (const IndexT view_id : out->partition.accepted[k].solution.view_ids) subgraph_of[view_id] = static_cast<int>(k);
+  }
+  for (const ViewPair& edge : out->landmark_check.emptied) {
+    const double left = static_cast<double>(graph->FindEdge(edge.first, edge.second)->matches.size());
+    const EdgeInvalidation why{EdgeInvalidReason::kLandmarkDisagreement, left, static_cast<double>(options.min_matches)};
+    RemoveEdge(edge, subgraph_of.at(edge.first), subgraph_of.at(edge.second), InterSubgraphVerdict::kLandmarkDisagreement,
+               why, graph, &out->removed_edges);
+  }
+}
+
 }  // namespace
 
 void PruneViewGraph(const ViewGraphPruningOptions& options, ViewGraph* graph, const SfmData& views_and_intrinsics,
@@ -324,6 +346,11 @@ void PruneViewGraph(const ViewGraphPruningOptions& options, ViewGraph* graph, co
     CutUnverifiedPairsByRotation(options.unverified_rotation, options.partition.engine.rotation, alignments, graph,
                                  &out);
     out.timings.push_back({"rotation check of unverified pairs", SecondsSince(start)});
+  }
+  if (options.landmark_check.max_angle_deg > 0.0) {
+    start = std::chrono::steady_clock::now();
+    CheckMatchesOfAlignedPairs(options.landmark_check, views_and_intrinsics, features, graph, &out);
+    out.timings.push_back({"landmark check of matches", SecondsSince(start)});
   }
   out.num_output_edges = graph->NumValidEdges();
   out.total_seconds = SecondsSince(total_start);

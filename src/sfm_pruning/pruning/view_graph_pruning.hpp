@@ -28,6 +28,7 @@
 
 #include "sfm_pruning/global/global_engine.hpp"
 #include "sfm_pruning/pruning/model_edge_audit.hpp"
+#include "sfm_pruning/pruning/landmark_match_check.hpp"
 #include "sfm_pruning/pruning/pair_trust.hpp"
 #include "sfm_pruning/pruning/recursive_partition.hpp"
 #include "sfm_pruning/pruning/subgraph_alignment.hpp"
@@ -66,6 +67,9 @@ struct ViewGraphPruningOptions {
   // graph (unverified_pair_rotations.hpp; off when max_median_error_deg is 0), averaged with the
   // rotation options of partition.engine.
   UnverifiedPairRotationOptions unverified_rotation;
+  // The kept edges between aligned subgraphs lose the matches their subgraphs' landmarks
+  // contradict (landmark_match_check.hpp; off when max_angle_deg is 0).
+  LandmarkMatchCheckOptions landmark_check;
 };
 
 struct SubgraphPairReport {
@@ -125,6 +129,8 @@ struct ViewGraphPruningReport {
   std::vector<EdgeAgreement> audit;
   size_t audit_readmitted = 0;
   size_t audit_removed = 0;
+  // The landmark check of the matches between aligned subgraphs (ViewGraphPruningOptions::landmark_check).
+  LandmarkMatchCheckReport landmark_check;
   std::vector<StageTiming> timings;  // "subgraph partition", "inter-subgraph pruning" (+ the audit's)
   double total_seconds = 0.0;
 };

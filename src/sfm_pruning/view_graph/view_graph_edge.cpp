@@ -22,6 +22,8 @@ std::string EdgeInvalidReasonName(EdgeInvalidReason reason) {
       return "model_disagreement";
     case EdgeInvalidReason::kUnverifiedRotation:
       return "unverified_rotation";
+    case EdgeInvalidReason::kLandmarkDisagreement:
+      return "landmark_disagreement";
     case EdgeInvalidReason::kOther:
       return "other";
   }

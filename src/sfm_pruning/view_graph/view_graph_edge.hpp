@@ -27,6 +27,8 @@ enum class EdgeInvalidReason {
                                // share required (pruning/model_edge_audit.hpp)
   kUnverifiedRotation,         // value: median deg between its pair's edges and a rotation averaging of
                                // the rest, threshold: the bound (pruning/unverified_pair_rotations.hpp)
+  kLandmarkDisagreement,       // value: matches left after the landmark check, threshold: the minimum
+                               // (pruning/landmark_match_check.hpp)
   kOther,                      // any other stage; value is stage-defined
 };
 

@@ -188,6 +188,12 @@ void AddPruningOptions(CLI::App* cmd, sfm_pruning::ViewGraphPruningOptions* opti
                     "false loops between opposite sides of a scene)")
       ->check(CLI::NonNegativeNumber)
       ->capture_default_str();
+  group->add_option("--prune_landmark_check_deg", options->landmark_check.max_angle_deg,
+                    "Each kept edge between two aligned subgraphs drops the matches whose landmark, carried into "
+                    "the other subgraph by the pair's transform, misses the other feature's ray by more than this "
+                    "(degrees; 0: off, the paper). Removes repeated-texture matches inside true pairs")
+      ->check(CLI::Range(0.0, 90.0))
+      ->capture_default_str();
   group->add_option("--prune_min_edges_for_trust", loops.min_edges_for_trust,
                     "trusted_forest: subgraph pairs of fewer connecting edges are ranked after all the others")
       ->capture_default_str();

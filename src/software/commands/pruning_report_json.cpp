@@ -151,6 +151,11 @@ nlohmann::json PruningReportJson(const sfm_pruning::ViewGraphPruningReport& prun
           {"subgraph_triangles", std::move(triangles)},
           {"subgraph_cycles", std::move(cycles)},
           {"removed_edges", std::move(removed)},
+          {"landmark_check", {{"edges", pruning.landmark_check.num_edges},
+                              {"matches", pruning.landmark_check.num_matches},
+                              {"tested", pruning.landmark_check.num_tested},
+                              {"dropped", pruning.landmark_check.num_dropped},
+                              {"edges_removed", pruning.landmark_check.emptied.size()}}},
           {"model_audit", {{"edges", std::move(audit)},
                            {"readmitted", pruning.audit_readmitted},
                            {"removed", pruning.audit_removed}}}};
@@ -168,6 +173,10 @@ std::string PruningSummary(const sfm_pruning::ViewGraphPruningReport& pruning) {
          std::to_string(pruning.partition.num_engine_runs) + " engine runs), removed " +
          std::to_string(pruning.removed_edges.size()) + " of " + std::to_string(pruning.num_input_edges) +
          " edges in " + std::to_string(pruning.pairs.size()) + " subgraph pairs, " + seconds + " s" +
+         (pruning.landmark_check.num_edges == 0
+              ? std::string()
+              : "; landmark check: " + std::to_string(pruning.landmark_check.num_dropped) + " of " +
+                    std::to_string(pruning.landmark_check.num_matches) + " matches dropped") +
          (pruning.audit.empty() ? std::string()
                                 : "; model audit: " + std::to_string(pruning.audit_readmitted) + " re-admitted, " +
                                       std::to_string(pruning.audit_removed) + " removed");
