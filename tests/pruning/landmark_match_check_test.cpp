@@ -27,9 +27,10 @@ struct TwoSubgraphs {
     pairs.push_back({0, 1, frame_a.Compose(frame_b.Inverse())});  // X_a = frame_a(frame_b⁻¹(X_b))
   }
 
-  LandmarkMatchCheckReport Check(double max_angle_deg) {
+  LandmarkMatchCheckReport Check(double max_angle_deg, bool place_views_without_transform = true) {
     LandmarkMatchCheckOptions options;
     options.max_angle_deg = max_angle_deg;
+    options.place_views_without_transform = place_views_without_transform;
     return CheckMatchesAgainstLandmarks(options, accepted, pairs, scene.views_and_intrinsics, scene.features,
                                         &scene.graph);
   }
@@ -71,13 +72,25 @@ TEST(LandmarkMatchCheck, ListsAnEdgeOfOnlyCopiesAndLeavesItValid) {
   EXPECT_TRUE(s.scene.graph.HasValidEdge(1, 2));  // the caller removes it
 }
 
-TEST(LandmarkMatchCheck, OffAtZeroAndSilentWithoutATransform) {
+TEST(LandmarkMatchCheck, OffAtZero) {
   TwoSubgraphs s;
   s.scene.AddTwinEdge(1, 2, TwinShift());
   EXPECT_EQ(s.Check(0.0).num_edges, 0u);
-  s.pairs.clear();
-  EXPECT_EQ(s.Check(5.0).num_edges, 0u);
   EXPECT_EQ(s.scene.graph.FindEdge(1, 2)->matches.size(), 40u);
+}
+
+// Without the pair's transform each view is placed in the other's subgraph by the edge's own EPnP,
+// whose RANSAC follows the majority: the 30 true matches.
+TEST(LandmarkMatchCheck, WithoutATransformTheEdgePlacesItsViews) {
+  TwoSubgraphs s;
+  s.pairs.clear();
+  s.scene.AddTwinEdge(0, 3, TwinShift(), 10);
+  for (IndexT p = 10; p < 40; ++p) s.scene.graph.MutableEdge(0, 3)->matches.push_back({p, p});
+  EXPECT_EQ(s.Check(5.0, false).num_edges, 0u);
+  const LandmarkMatchCheckReport report = s.Check(5.0);
+  EXPECT_EQ(report.num_edges, 1u);
+  EXPECT_EQ(report.num_dropped, 10u);
+  EXPECT_EQ(s.scene.graph.FindEdge(0, 3)->matches.size(), 30u);
 }
 
 TEST(LandmarkMatchCheck, RayAngleToPointIsTheAngleAtTheCamera) {

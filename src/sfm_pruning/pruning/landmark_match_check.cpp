@@ -6,6 +6,8 @@
 #include <optional>
 #include <utility>
 
+#include "sfm_pruning/pruning/subgraph_edge_placement.hpp"
+
 namespace sfm_pruning {
 namespace {
 
@@ -34,6 +36,27 @@ std::optional<bool> Contradicts(const EdgeSide& from, IndexT from_feature, const
   if (!X) return std::nullopt;
   const Eigen::Vector2d pixel = to.features->Position(to_feature);
   return RayAngleToPoint(*to.intrinsics, *to.pose, pixel, to_frame.Apply(*X)) > max_angle_rad;
+}
+
+// The other side of a check and the transform that carries the landmarks into its frame.
+struct Direction {
+  EdgeSide to;
+  Similarity3 into_to;
+};
+
+// `to`'s view placed in `from`'s subgraph by the edge's EPnP (subgraph_edge_placement.hpp), as
+// the side `from`'s landmarks are checked against (identity transform); nullopt when it cannot be
+// placed. `placed` holds the pose the returned side points to.
+std::optional<Direction> PlacedDirection(const ViewGraph& graph, const EdgeSide& from, const EdgeSide& to,
+                                         const SfmData& views_and_intrinsics, const FeaturesPerView& features,
+                                         Pose* placed) {
+  const EdgePlacement placement = PlaceViewInSubgraph(graph, from.view_id, to.view_id, *from.solution,
+                                                      *from.landmark_of, views_and_intrinsics, features);
+  if (placement.status != EdgePlacementStatus::kPlaced) return std::nullopt;
+  *placed = placement.pose_j_in_k1;
+  EdgeSide side = to;
+  side.pose = placed;
+  return Direction{side, Similarity3()};
 }
 
 }  // namespace
@@ -73,12 +96,27 @@ LandmarkMatchCheckReport CheckMatchesAgainstLandmarks(const LandmarkMatchCheckOp
   };
 
   for (const EdgeOfSubgraphs& edge : EdgesOfAcceptedSubgraphs(*graph, accepted)) {
-    const auto second_to_first = into.find({edge.k_first, edge.k_second});
-    if (edge.k_first == edge.k_second || second_to_first == into.end()) continue;
-    const Similarity3& first_to_second = into.at({edge.k_second, edge.k_first});
+    if (edge.k_first == edge.k_second) continue;
     const std::optional<EdgeSide> first = side_of(edge.pair.first, edge.k_first);
     const std::optional<EdgeSide> second = side_of(edge.pair.second, edge.k_second);
     if (!first || !second) continue;
+    // How one side's landmarks reach the other side's rays: through the pair's transform, or,
+    // without one, through the other view placed in this side's subgraph by the edge's own EPnP.
+    std::optional<Direction> forward;   // first's landmarks against second's rays
+    std::optional<Direction> backward;  // second's landmarks against first's rays
+    Pose second_in_first;
+    Pose first_in_second;
+    const auto second_to_first = into.find({edge.k_first, edge.k_second});
+    if (second_to_first != into.end()) {
+      forward = Direction{*second, into.at({edge.k_second, edge.k_first})};
+      backward = Direction{*first, second_to_first->second};
+    } else if (options.place_views_without_transform) {
+      forward = PlacedDirection(*graph, *first, *second, views_and_intrinsics, features, &second_in_first);
+      backward = PlacedDirection(*graph, *second, *first, views_and_intrinsics, features, &first_in_second);
+      if (!forward && !backward) continue;
+    } else {
+      continue;
+    }
 
     ViewGraphEdge* graph_edge = graph->MutableEdge(edge.pair.first, edge.pair.second);
     ++report.num_edges;
@@ -86,11 +124,13 @@ LandmarkMatchCheckReport CheckMatchesAgainstLandmarks(const LandmarkMatchCheckOp
     std::vector<FeatureMatch> kept;
     kept.reserve(graph_edge->matches.size());
     for (const FeatureMatch& match : graph_edge->matches) {
-      const std::optional<bool> forward = Contradicts(*first, match.i, *second, match.j, first_to_second, max_angle_rad);
-      const std::optional<bool> backward =
-          Contradicts(*second, match.j, *first, match.i, second_to_first->second, max_angle_rad);
-      if (forward || backward) ++report.num_tested;
-      if (forward.value_or(false) || backward.value_or(false)) {
+      const std::optional<bool> forward_off =
+          forward ? Contradicts(*first, match.i, forward->to, match.j, forward->into_to, max_angle_rad) : std::nullopt;
+      const std::optional<bool> backward_off =
+          backward ? Contradicts(*second, match.j, backward->to, match.i, backward->into_to, max_angle_rad)
+                   : std::nullopt;
+      if (forward_off || backward_off) ++report.num_tested;
+      if (forward_off.value_or(false) || backward_off.value_or(false)) {
         ++report.num_dropped;
         continue;
       }

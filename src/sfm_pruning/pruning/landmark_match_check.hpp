@@ -12,9 +12,13 @@
 // check. Under it, a true match's feature looks at the other subgraph's landmark of its partner; a
 // twin match's looks one facade module away from it.
 //
+// A pair without a transform (too few edges to vote, no supported hypothesis) has none to carry
+// the landmarks, so each view of its edge is placed in the other's subgraph by the edge's own EPnP
+// (whose RANSAC follows the edge's majority) and checked against that placement.
+//
 // What it cannot see: a pair whose transform is itself the twins' (then its twin matches agree
-// and its true ones are dropped: the decision, not this check, is wrong), and the matches whose
-// features no landmark of either subgraph observes (they are kept).
+// and its true ones are dropped: the decision, not this check, is wrong), an edge whose majority
+// is twins, and the matches whose features no landmark of either subgraph observes (kept).
 #pragma once
 
 #include <cstddef>
@@ -34,6 +38,10 @@ struct LandmarkMatchCheckOptions {
   double max_angle_deg = 0.0;
   // An edge left with fewer matches is removed (its relative pose came from the dropped ones).
   size_t min_matches = 5;
+  // Edges of pairs without a frame transform (too few edges to vote, no supported hypothesis):
+  // each view is placed in the other's subgraph by the edge's own EPnP, and the landmarks are
+  // checked against that placement (false: such edges are left alone).
+  bool place_views_without_transform = true;
 };
 
 // Two accepted subgraphs (indices into the partition's accepted list) and the frame transform of
