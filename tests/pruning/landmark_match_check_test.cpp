@@ -68,7 +68,7 @@ TEST(LandmarkMatchCheck, ListsAnEdgeOfOnlyCopiesAndLeavesItValid) {
   const LandmarkMatchCheckReport report = s.Check(5.0);
   EXPECT_EQ(report.num_dropped, 40u);
   ASSERT_EQ(report.emptied.size(), 1u);
-  EXPECT_EQ(report.emptied[0], ViewPair(1, 2));
+  EXPECT_EQ(report.emptied[0].pair, ViewPair(1, 2));
   EXPECT_TRUE(s.scene.graph.HasValidEdge(1, 2));  // the caller removes it
 }
 

@@ -1,7 +1,5 @@
 #include "sfm_pruning/pruning/landmark_match_check.hpp"
 
-#include <algorithm>
-#include <cmath>
 #include <map>
 #include <optional>
 #include <utility>
@@ -63,9 +61,7 @@ std::optional<Direction> PlacedDirection(const ViewGraph& graph, const EdgeSide&
 
 double RayAngleToPoint(const CameraIntrinsics& intrinsics, const Pose& pose, const Eigen::Vector2d& pixel,
                        const Eigen::Vector3d& X) {
-  const Eigen::Vector3d ray = pose.rotation.transpose() * intrinsics.Unproject(pixel);
-  const Eigen::Vector3d to_point = X - pose.center;
-  return std::atan2(ray.cross(to_point).norm(), ray.dot(to_point));
+  return AngleBetweenVectors(pose.rotation.transpose() * intrinsics.Unproject(pixel), X - pose.center);
 }
 
 LandmarkMatchCheckReport CheckMatchesAgainstLandmarks(const LandmarkMatchCheckOptions& options,
@@ -137,7 +133,7 @@ LandmarkMatchCheckReport CheckMatchesAgainstLandmarks(const LandmarkMatchCheckOp
       kept.push_back(match);
     }
     graph_edge->matches = std::move(kept);
-    if (graph_edge->matches.size() < options.min_matches) report.emptied.push_back(edge.pair);
+    if (graph_edge->matches.size() < options.min_matches) report.emptied.push_back(edge);
   }
   return report;
 }

@@ -53,11 +53,12 @@ struct AlignedSubgraphs {
 };
 
 struct LandmarkMatchCheckReport {
-  size_t num_edges = 0;           // valid edges between two aligned subgraphs
-  size_t num_matches = 0;         // their matches
-  size_t num_tested = 0;          // matches with a landmark on at least one side
+  size_t num_edges = 0;    // valid edges between two subgraphs that were checked
+  size_t num_matches = 0;  // their matches
+  size_t num_tested = 0;   // matches with a landmark on at least one side
   size_t num_dropped = 0;
-  std::vector<ViewPair> emptied;  // edges left with fewer than min_matches (the caller removes them)
+  // Edges left with fewer than min_matches, with their subgraphs (the caller removes them).
+  std::vector<EdgeOfSubgraphs> emptied;
 };
 
 // The angle in radians between the ray of `pixel` seen by a camera at `pose` with `intrinsics`
@@ -65,8 +66,9 @@ struct LandmarkMatchCheckReport {
 double RayAngleToPoint(const CameraIntrinsics& intrinsics, const Pose& pose, const Eigen::Vector2d& pixel,
                        const Eigen::Vector3d& X);
 
-// Drops, from every valid edge of `graph` between the two subgraphs of an entry of `pairs`, the
-// matches a landmark contradicts (Options::max_angle_deg). Poses and landmarks come from the
+// Drops, from every valid edge of `graph` between two accepted subgraphs, the matches a landmark
+// contradicts (Options::max_angle_deg), through the transform of the pair's entry in `pairs` or,
+// without one, the edge's own placement (Options::place_views_without_transform). Poses and landmarks come from the
 // accepted subgraphs' solutions, rays from `features` and the views' intrinsics. Edges are not
 // invalidated here: those left with too few matches are listed in the report.
 LandmarkMatchCheckReport CheckMatchesAgainstLandmarks(const LandmarkMatchCheckOptions& options,

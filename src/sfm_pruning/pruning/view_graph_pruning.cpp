@@ -216,8 +216,8 @@ void CutUnverifiedPairsByRotation(const UnverifiedPairRotationOptions& options,
   }
 }
 
-// The landmark check on every pair with a frame transform (its kept edges agree with it); edges
-// left with too few matches are removed with their pair's indices.
+// The landmark check on the edges between subgraphs, through the transforms of the pairs that have
+// one (their kept edges agree with it); edges left with too few matches are removed.
 void CheckMatchesOfAlignedPairs(const LandmarkMatchCheckOptions& options, const SfmData& views_and_intrinsics,
                                 const FeaturesPerView& features, ViewGraph* graph, ViewGraphPruningReport* out) {
   std::vector<AlignedSubgraphs> aligned;
@@ -226,15 +226,11 @@ void CheckMatchesOfAlignedPairs(const LandmarkMatchCheckOptions& options, const 
   }
   out->landmark_check =
       CheckMatchesAgainstLandmarks(options, out->partition.accepted, aligned, views_and_intrinsics, features, graph);
-  std::map<IndexT, int> subgraph_of;
-  for (size_t k = 0; k < out->partition.accepted.size(); ++k) {
-    for (const IndexT view_id : out->partition.accepted[k].solution.view_ids) subgraph_of[view_id] = static_cast<int>(k);
-  }
-  for (const ViewPair& edge : out->landmark_check.emptied) {
-    const double left = static_cast<double>(graph->FindEdge(edge.first, edge.second)->matches.size());
+  for (const EdgeOfSubgraphs& edge : out->landmark_check.emptied) {
+    const double left = static_cast<double>(graph->FindEdge(edge.pair.first, edge.pair.second)->matches.size());
     const EdgeInvalidation why{EdgeInvalidReason::kLandmarkDisagreement, left, static_cast<double>(options.min_matches)};
-    RemoveEdge(edge, subgraph_of.at(edge.first), subgraph_of.at(edge.second), InterSubgraphVerdict::kLandmarkDisagreement,
-               why, graph, &out->removed_edges);
+    RemoveEdge(edge.pair, edge.k_first, edge.k_second, InterSubgraphVerdict::kLandmarkDisagreement, why, graph,
+               &out->removed_edges);
   }
 }
 

@@ -27,8 +27,8 @@
 #include <vector>
 
 #include "sfm_pruning/global/global_engine.hpp"
-#include "sfm_pruning/pruning/model_edge_audit.hpp"
 #include "sfm_pruning/pruning/landmark_match_check.hpp"
+#include "sfm_pruning/pruning/model_edge_audit.hpp"
 #include "sfm_pruning/pruning/pair_trust.hpp"
 #include "sfm_pruning/pruning/recursive_partition.hpp"
 #include "sfm_pruning/pruning/subgraph_alignment.hpp"
@@ -67,8 +67,8 @@ struct ViewGraphPruningOptions {
   // graph (unverified_pair_rotations.hpp; off when max_median_error_deg is 0), averaged with the
   // rotation options of partition.engine.
   UnverifiedPairRotationOptions unverified_rotation;
-  // The kept edges between aligned subgraphs lose the matches their subgraphs' landmarks
-  // contradict (landmark_match_check.hpp; off when max_angle_deg is 0).
+  // The kept edges between subgraphs lose the matches their subgraphs' landmarks contradict
+  // (landmark_match_check.hpp; off when max_angle_deg is 0).
   LandmarkMatchCheckOptions landmark_check;
 };
 
