@@ -60,8 +60,7 @@ def main():
     for name in [s for s in args.scenes.split(",") if s]:
         scene = work / name
         synth_scene, synth_options = SCENES[name]
-        synth = [prunesfm, "synth", "--scene", synth_scene, "--seed", args.seed, "--output", scene]
-        rb.run_stage("synth", synth + synth_options, work / f"{name}_synth.log", args.timeout)
+        rb.synth_stage(prunesfm, synth_scene, args.seed, scene, work / f"{name}_synth.log", args.timeout, synth_options)
         twins, num_pairs = ob.twin_dominated_pairs(scene / "ground_truth" / "synthetic_scene.json", 1.0)
         for label, extra in SETTINGS.items():
             cells = [run_cell(args, prunesfm, scene, work / f"{name}_{label.split(',')[0]}_{k}", extra + variant)

@@ -157,8 +157,7 @@ def main():
             shutil.rmtree(work)
         work.mkdir(parents=True)
         synth = work / "scene"
-        rb.run_stage("synth", [prunesfm, "synth", "--scene", scene, "--seed", args.seed, "--output", synth, *extra],
-                     work / "synth.log", args.timeout)
+        rb.synth_stage(prunesfm, scene, args.seed, synth, work / "synth.log", args.timeout, extra)
         gt = synth / "ground_truth" / "gt_cameras.txt"
         row = {}
         for engine in ("GLOBAL", "GLOBAL_PRUNED"):

@@ -26,8 +26,8 @@ def prepare(args, prunesfm, work):
     synth_args = ["--scene", "sequential_large", "--num_views", str(args.num_views), "--seed", str(args.seed)]
     if not (args.reuse and stamp.is_file() and json.loads(stamp.read_text()) == synth_args
             and (scene / "database.db").is_file()):
-        stage = rb.run_stage("synth", [prunesfm, "synth", *synth_args, "--output", scene,
-                                       "--num_threads", args.threads], work / "synth.log", args.timeout)
+        stage = rb.synth_stage(prunesfm, "sequential_large", args.seed, scene, work / "synth.log", args.timeout,
+                               ["--num_views", args.num_views], args.threads)
         if stage["rc"] != 0:
             sys.exit(f"pruning_cost_bench: synth failed: {stage.get('error')}")
         stamp.write_text(json.dumps(synth_args) + "\n")

@@ -95,8 +95,7 @@ def main():
         label, scene_name, extra = ob.parse_scene(spec)
         scene = work / label
         if not (args.reuse and (scene / "database.db").is_file()):
-            rb.run_stage("synth", [prunesfm, "synth", "--scene", scene_name, "--seed", args.seed, "--output", scene,
-                                   *extra], work / f"{label}_synth.log", args.timeout)
+            rb.synth_stage(prunesfm, scene_name, args.seed, scene, work / f"{label}_synth.log", args.timeout, extra)
         out = work / f"{label}_run"
         argv = [prunesfm, "run", "--database", scene / "database.db", "--image_path", scene / "images",
                 "--output", out, "--engine", "GLOBAL_PRUNED", "--seed", args.seed, "--num_threads", args.threads,

@@ -271,6 +271,19 @@ def colmap_camera_summary(db_path):
     return {"num_cameras": len(rows), "prior_focal_from_exif": any(r[3] for r in rows)}
 
 
+def synth_stage(prunesfm, scene, seed, out, log_path, timeout_s, extra=(), threads=None):
+    """`prunesfm synth --scene SCENE --seed SEED --output OUT [--num_threads N] EXTRA...` as a stage.
+    On success it also makes OUT/images: synth writes no image files, but `prunesfm run --database`
+    and COLMAP's mapper want the folder to exist."""
+    argv = [prunesfm, "synth", "--scene", scene, "--seed", seed, "--output", out]
+    if threads is not None:
+        argv += ["--num_threads", threads]
+    stage = run_stage("synth", argv + list(extra), log_path, timeout_s)
+    if stage["rc"] == 0:
+        (Path(out) / "images").mkdir(parents=True, exist_ok=True)
+    return stage
+
+
 def prepare_synthetic(args, prunesfm, scene, num_views, work):
     """`prunesfm synth`: features + putative matches (database.db) + ground truth."""
     key = scene if num_views is None else f"{scene}@{num_views}"
@@ -290,12 +303,8 @@ def prepare_synthetic(args, prunesfm, scene, num_views, work):
         return {"key": key, "kind": "synthetic", "database": out / "database.db", "images": out / "images",
                 "gt": gt, "prep": prep, "shared_stages": [], "ok": True, "error": None,
                 "synth_args": synth_args, "reused": True}
-    stage = run_stage("synth", [prunesfm, "synth", "--scene", scene, "--output", out, "--seed", args.seed,
-                                "--num_threads", args.threads, *extra], work / f"{key}.synth.log", args.timeout)
-    images = out / "images"  # synth writes no images; COLMAP's mapper only needs the folder to exist
-    if stage["rc"] == 0:
-        images.mkdir(exist_ok=True)
-    return {"key": key, "kind": "synthetic", "database": out / "database.db", "images": images,
+    stage = synth_stage(prunesfm, scene, args.seed, out, work / f"{key}.synth.log", args.timeout, extra, args.threads)
+    return {"key": key, "kind": "synthetic", "database": out / "database.db", "images": out / "images",
             "gt": out / "ground_truth" / "gt_cameras.txt", "prep": [stage], "shared_stages": [],
             "ok": stage["rc"] == 0, "error": stage.get("error"), "synth_args": synth_args, "reused": False}
 

@@ -50,12 +50,11 @@ def synthetic_scene(args, prunesfm, scene):
     out = Path(args.work) / "synthetic" / scene / "data"
     gt = out / "ground_truth" / "gt_cameras.txt"
     if not gt.is_file():
-        stage = rb.run_stage("synth", [prunesfm, "synth", "--scene", scene, "--seed", args.seed, "--output", out,
-                                       "--num_threads", args.threads], Path(args.work) / f"{scene}_synth.log",
-                             args.timeout)
+        stage = rb.synth_stage(prunesfm, scene, args.seed, out, Path(args.work) / f"{scene}_synth.log", args.timeout,
+                               threads=args.threads)
         if stage["rc"] != 0:
             sys.exit(f"seed_sweep_bench: prunesfm synth --scene {scene} failed (see {args.work}/{scene}_synth.log)")
-    (out / "images").mkdir(exist_ok=True)  # synth writes no images; `run --database` wants the folder
+    (out / "images").mkdir(exist_ok=True)  # a scene synthesized by an earlier run may predate the folder
     return out / "database.db", out / "images", gt
 
 

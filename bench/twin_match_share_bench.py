@@ -75,8 +75,7 @@ def main():
     work = Path(args.work).resolve()
     work.mkdir(parents=True, exist_ok=True)
     scene = work / "scene"
-    rb.run_stage("synth", [prunesfm, "synth", "--scene", args.scene, "--seed", args.seed, "--output", scene],
-                 work / "synth.log", args.timeout)
+    rb.synth_stage(prunesfm, args.scene, args.seed, scene, work / "synth.log", args.timeout)
     labels = scene / "ground_truth" / "feature_landmarks.txt"
     if not labels.is_file():
         print(f"twin_match_share_bench: {labels} missing (a prunesfm older than its match labels)")
