@@ -4,6 +4,8 @@
 
 #include <filesystem>
 #include <fstream>
+#include <string>
+#include <vector>
 
 #include <nlohmann/json.hpp>
 
@@ -151,6 +153,40 @@ TEST(CliReconstruct, ModelAuditWitnessRotationAndLandmarkChecksLeaveACleanSceneA
   ASSERT_FALSE(audit.at("edges").empty());
   for (const nlohmann::json& edge : audit.at("edges")) {
     EXPECT_GE(edge.at("agreeing").get<double>(), 0.9 * edge.at("transferred").get<double>()) << edge.dump();
+  }
+}
+
+TEST(CliReconstruct, PruningRansacTriesEverySampleOfASmallPairOnce) {
+  // By default a pair whose pool has at most 1000 distinct samples of 2 edges tries each once (the
+  // first candidate's pool is every voting edge); with 0 every pair draws the paper's 30 rounds.
+  const fs::path scratch = ScratchDir("cli_reconstruct_enumerate");
+  for (const char* bound : {"1000", "0"}) {
+    const fs::path out = scratch / bound;
+    std::vector<std::string> args = {"run", "--database", (CleanProject() / "database.db").string(), "--image_path",
+                                     (scratch / "images").string(), "--output_path", out.string(), "--engine",
+                                     "GLOBAL_PRUNED"};
+    if (std::string(bound) == "0") args.insert(args.end(), {"--prune_ransac_enumerate_max", "0"});
+    const CommandResult result = RunPrunesfm(args);
+    ASSERT_EQ(result.exit_code, 0) << result.err;
+    EXPECT_GE(Auc3(out / "sparse" / "0", scratch), 97.0) << bound;
+    const nlohmann::json timings = nlohmann::json::parse(std::ifstream(out / "timings.json"));
+    EXPECT_EQ(timings.at("prune_ransac_enumerate_max").get<size_t>(), std::stoul(bound));
+    const nlohmann::json report = nlohmann::json::parse(std::ifstream(out / "pruning_report.json"));
+    int judged = 0;
+    for (const nlohmann::json& pair : report.at("subgraph_pairs")) {
+      if (pair.at("hypotheses").empty()) continue;
+      const nlohmann::json& first = pair.at("hypotheses").at(0);
+      const int voting = pair.at("voting_edges").get<int>();
+      ++judged;
+      if (std::string(bound) == "0") {
+        EXPECT_FALSE(first.at("enumerated").get<bool>()) << pair.dump();
+        EXPECT_EQ(first.at("samples").get<int>(), 30) << pair.dump();
+      } else if (voting <= 45) {
+        EXPECT_TRUE(first.at("enumerated").get<bool>()) << pair.dump();
+        EXPECT_EQ(first.at("samples").get<int>(), voting * (voting - 1) / 2) << pair.dump();
+      }
+    }
+    EXPECT_GT(judged, 0) << bound;
   }
 }
 

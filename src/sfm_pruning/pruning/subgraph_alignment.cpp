@@ -8,6 +8,7 @@
 
 #include "sfm_pruning/geometry/so3.hpp"
 #include "sfm_pruning/pruning/edge_depth_scale.hpp"
+#include "sfm_pruning/pruning/ransac_samples.hpp"
 
 namespace sfm_pruning {
 namespace {
@@ -115,6 +116,8 @@ struct Candidate {
   Hypothesis hypothesis;
   Consensus consensus;  // over every voting edge
   int iteration = -1;
+  int num_samples = 0;      // of its RANSAC run (0: the witness's candidate)
+  bool enumerated = false;  // that run tried every sample (RansacSamples)
 };
 
 // Refit on the whole consensus while it grows, at most `rounds` times (Options::refine_rounds for a
@@ -143,18 +146,11 @@ std::optional<Candidate> RansacOverPool(const std::vector<ChainedRelativePose>& 
   const size_t n = pool.size();
   const size_t sample_size = SampleSize(n, options);
   if (result->sample_size == 0) result->sample_size = sample_size;
-  std::vector<size_t> order(n);
+  RansacSamples samples(n, sample_size, options.num_iterations, options.max_enumerated_samples, rng);
   std::optional<Candidate> best;
-  for (int iteration = 0; iteration < options.num_iterations; ++iteration) {
-    std::iota(order.begin(), order.end(), size_t{0});
-    for (size_t k = 0; k < sample_size; ++k) {  // partial Fisher–Yates
-      std::uniform_int_distribution<size_t> pick(k, n - 1);
-      std::swap(order[k], order[pick(*rng)]);
-    }
-    std::vector<size_t> sample;
-    sample.reserve(sample_size);
-    for (size_t k = 0; k < sample_size; ++k) sample.push_back(pool[order[k]]);
-    std::sort(sample.begin(), sample.end());
+  for (int iteration = 0; iteration < samples.size(); ++iteration) {
+    std::vector<size_t> sample = samples.Next();
+    for (size_t& k : sample) k = pool[k];  // the pool is ascending, so the sample stays sorted
     const std::optional<Hypothesis> hypothesis = FitHypothesis(chains, sample, options);
     if (!hypothesis) continue;
     ++result->num_valid_hypotheses;
@@ -164,7 +160,11 @@ std::optional<Candidate> RansacOverPool(const std::vector<ChainedRelativePose>& 
                          consensus.total_error < best->consensus.total_error);
     if (better) best = Candidate{*hypothesis, std::move(consensus), iteration};
   }
-  if (best) RefineOnConsensus(chains, options, options.refine_rounds, std::nullopt, &*best);
+  if (best) {
+    best->num_samples = samples.size();
+    best->enumerated = samples.enumerated();
+    RefineOnConsensus(chains, options, options.refine_rounds, std::nullopt, &*best);
+  }
   return best;
 }
 
@@ -343,6 +343,8 @@ void RunRansac(const std::vector<ChainedRelativePose>& chains, const std::vector
     ScoreCoverage(candidates[c].consensus, coverage, options, &summary);
     summary.distinctive_share = ConsensusShare(candidates[c].consensus, distinctiveness);
     summary.distinctive_witness = static_cast<int>(c) == witness_candidate;
+    summary.num_samples = candidates[c].num_samples;
+    summary.enumerated = candidates[c].enumerated;
     result->hypotheses.push_back(summary);
   }
   // Candidates whose edges miss more landmarks than the break-even are ruled out; the largest

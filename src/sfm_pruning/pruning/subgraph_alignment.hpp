@@ -45,6 +45,11 @@ struct SubgraphAlignmentOptions {
   int num_iterations = 30;          // paper: 30 (ablation 20 / 40)
   double sample_fraction = 0.4;     // of the voting edges, rounded down
   size_t min_sample_size = 2;       // β needs two edges
+  // A run whose pool has at most this many distinct samples tries each of them once instead of
+  // num_iterations random draws (not in the paper; ransac_samples.hpp): the search is complete and
+  // the decision no longer depends on the seed. 1000 covers pools of up to 45 edges at the sample
+  // of 2 (ViewGraphPruningOptions::max_sample_size). 0 = always the paper's random draws.
+  size_t max_enumerated_samples = 1000;
   double max_rotation_deviation_deg = 5.0;           // E_r
   double max_translation_deviation_fraction = 0.05;  // E_t / |t̄|
   uint64_t seed = 0;                // RANSAC sampler (std::mt19937_64)
@@ -170,6 +175,8 @@ struct AlignmentHypothesis {
   // and whether the candidate is the most distinctive edge's (Options::distinctive_witness_ratio).
   double distinctive_share = -1.0;
   bool distinctive_witness = false;
+  int num_samples = 0;      // samples its RANSAC run tried (0: the witness's candidate)
+  bool enumerated = false;  // every distinct sample of the run's pool (Options::max_enumerated_samples)
 
   // matched / expected; infinity when nothing was expected (no evidence against the candidate).
   double Coverage() const {

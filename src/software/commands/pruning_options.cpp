@@ -66,6 +66,10 @@ void AddPruningOptions(CLI::App* cmd, sfm_pruning::ViewGraphPruningOptions* opti
                     "RANSAC rounds per pair of subgraphs (paper ablation: 20 / 30 / 40)")
       ->check(CLI::PositiveNumber)
       ->capture_default_str();
+  group->add_option("--prune_ransac_enumerate_max", alignment.max_enumerated_samples,
+                    "A pair whose RANSAC pool has at most this many distinct samples tries each once instead of "
+                    "the random rounds (complete, seed-independent); 0: always the paper's random rounds")
+      ->capture_default_str();
   group->add_option("--prune_sample_fraction", alignment.sample_fraction,
                     "Fraction of the connecting edges drawn per RANSAC round")
       ->check(CLI::Range(0.0, 1.0))

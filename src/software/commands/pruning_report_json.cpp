@@ -76,7 +76,9 @@ nlohmann::json PruningReportJson(const sfm_pruning::ViewGraphPruningReport& prun
                             {"matched_landmarks", h.matched_landmarks},
                             {"coverage_score", h.coverage_score},
                             {"distinctive_share", h.distinctive_share},
-                            {"distinctive_witness", h.distinctive_witness}});
+                            {"distinctive_witness", h.distinctive_witness},
+                            {"samples", h.num_samples},
+                            {"enumerated", h.enumerated}});
     }
     pairs.push_back({{"hypotheses", std::move(hypotheses)},
                      {"selected_hypothesis", pair.selected_hypothesis},

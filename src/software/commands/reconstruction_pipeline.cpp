@@ -144,6 +144,7 @@ nlohmann::json TimingsJson(const EngineSettings& settings, const sfm_pruning::Vi
     json["prune_model_audit"] = settings.pruning.audit.enabled;
     json["prune_unverified_max_rotation_deg"] = settings.pruning.unverified_rotation.max_median_error_deg;
     json["prune_landmark_check_deg"] = settings.pruning.landmark_check.max_angle_deg;
+    json["prune_ransac_enumerate_max"] = settings.pruning.alignment.max_enumerated_samples;
   }
   json["seed"] = settings.seed;
   json["num_threads"] = settings.num_threads;
