@@ -4,7 +4,8 @@
 //      (subgraph_edge_placement.hpp); edges that cannot be placed do not vote;
 //   2. each voting edge gives the chained relative pose c1 -> i -> j -> c2 between the mean
 //      poses, its translation affine in the scale β (chained_relative_pose.hpp);
-//   3. RANSAC, num_iterations rounds: draw floor(sample_fraction · N) voting edges (at least
+//   3. RANSAC, num_iterations rounds (or every distinct sample once when there are at most
+//      max_enumerated_samples): draw floor(sample_fraction · N) voting edges (at least
 //      min_sample_size), fit β* and the sample means (rotation r̄, translation t̄), and count
 //      every voting edge with E_r ≤ max_rotation_deviation_deg and
 //      E_t = |t_e(β*) − t̄| ≤ max_translation_deviation_fraction · |t̄|. The largest consensus
