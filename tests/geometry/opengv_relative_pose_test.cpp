@@ -69,6 +69,31 @@ TEST(OpenGVRelativePose, NoisyWithOutliers) {
   }
 }
 
+// Model choice by precision on a scene without a competing structure: whichever model is kept,
+// it is right and its inliers are selected at the full threshold, so none of the true matches the
+// single-threshold estimate keeps is lost (a tight threshold alone would lose the noisier ones).
+TEST(OpenGVRelativePose, PrecisionCheckKeepsTheRightModelAndTheFullThresholdsInliers) {
+  for (uint32_t seed = 1; seed <= 5; ++seed) {
+    // {points, pixel noise, outlier ratio, distortion, seed}
+    const testing::SyntheticScene scene = testing::MakeSyntheticScene(2, {200, 0.5, 0.25, true, seed});
+    const RelativePoseResult single = EstimateRelativePose(scene.bearings[0], scene.bearings[1]);
+    RelativePoseOptions options;
+    options.precision_check_ratio = 0.25;
+    const RelativePoseResult checked = EstimateRelativePose(scene.bearings[0], scene.bearings[1], options);
+    RelativePoseOptions tight = options;
+    tight.precision_check_ratio = 0.0;
+    tight.max_angular_error_deg *= options.precision_check_ratio;
+    const RelativePoseResult tight_only = EstimateRelativePose(scene.bearings[0], scene.bearings[1], tight);
+    ASSERT_TRUE(single.success && checked.success && tight_only.success);
+    const RelativePose truth = TrueRelativePose(scene);
+    EXPECT_LT(RadToDeg(RotationError(checked.relative_pose, truth)), 0.5) << "seed " << seed;
+    EXPECT_LT(RadToDeg(DirectionError(checked.relative_pose, truth)), 0.5) << "seed " << seed;
+    EXPECT_GE(InlierRecall(scene, checked.inliers), InlierRecall(scene, single.inliers) - 0.01) << "seed " << seed;
+    EXPECT_GT(checked.num_inliers, tight_only.num_inliers) << "seed " << seed;
+    EXPECT_GT(checked.num_ransac_iterations, single.num_ransac_iterations) << "both thresholds ran";
+  }
+}
+
 TEST(OpenGVRelativePose, MinimalSamplesCopeWithALowInlierRatio) {
   // 35 % inliers: hopeless for 8-correspondence samples (0.35^8 = 2e-4), routine for 5.
   // {points, pixel noise, outlier ratio, distortion, seed}

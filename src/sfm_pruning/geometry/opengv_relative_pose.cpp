@@ -1,8 +1,10 @@
 #include "sfm_pruning/geometry/opengv_relative_pose.hpp"
 
+#include <algorithm>
 #include <memory>
 #include <optional>
 #include <string>
+#include <utility>
 
 #include <opengv/relative_pose/CentralRelativeAdapter.hpp>
 #include <opengv/relative_pose/methods.hpp>
@@ -127,11 +129,22 @@ RelativePose ResolveByCheirality(const RelativePose& pose, const std::vector<Eig
   return best;
 }
 
-}  // namespace
+// Sum over every correspondence of min(e^2, truncation^2), e the angular epipolar error (MSAC's
+// score): a model that fits its inliers more tightly costs less.
+double TruncatedQuadraticCost(const RelativePose& pose, const std::vector<Eigen::Vector3d>& bearings_i,
+                              const std::vector<Eigen::Vector3d>& bearings_j, double truncation_rad) {
+  double cost = 0.0;
+  for (size_t k = 0; k < bearings_i.size(); ++k) {
+    const double error = AngularEpipolarError(pose, bearings_i[k], bearings_j[k]);
+    cost += std::min(error * error, truncation_rad * truncation_rad);
+  }
+  return cost;
+}
 
-RelativePoseResult EstimateRelativePose(const std::vector<Eigen::Vector3d>& bearings_i,
-                                        const std::vector<Eigen::Vector3d>& bearings_j,
-                                        const RelativePoseOptions& options) {
+// RANSAC, cheirality, refinement and inlier selection at options.max_angular_error_deg.
+RelativePoseResult EstimateAtThreshold(const std::vector<Eigen::Vector3d>& bearings_i,
+                                       const std::vector<Eigen::Vector3d>& bearings_j,
+                                       const RelativePoseOptions& options) {
   if (bearings_i.size() != bearings_j.size()) return FailedResult<RelativePoseResult>("bearing arrays differ in size");
   const opengv::bearingVectors_t opengv_i = ToOpenGVVectors(bearings_i);
   const opengv::bearingVectors_t opengv_j = ToOpenGVVectors(bearings_j);
@@ -182,6 +195,33 @@ RelativePoseResult EstimateRelativePose(const std::vector<Eigen::Vector3d>& bear
   }
   result.success = true;
   return result;
+}
+
+}  // namespace
+
+RelativePoseResult EstimateRelativePose(const std::vector<Eigen::Vector3d>& bearings_i,
+                                        const std::vector<Eigen::Vector3d>& bearings_j,
+                                        const RelativePoseOptions& options) {
+  RelativePoseResult loose = EstimateAtThreshold(bearings_i, bearings_j, options);
+  const double ratio = options.precision_check_ratio;
+  if (!loose.success || !(ratio > 0.0 && ratio < 1.0)) return loose;
+  RelativePoseOptions tight_options = options;
+  tight_options.max_angular_error_deg *= ratio;
+  RelativePoseResult tight = EstimateAtThreshold(bearings_i, bearings_j, tight_options);
+  tight.num_ransac_iterations += loose.num_ransac_iterations;
+  loose.num_ransac_iterations = tight.num_ransac_iterations;
+  if (!tight.success) return loose;
+  const double truncation = DegToRad(tight_options.max_angular_error_deg);
+  if (!(TruncatedQuadraticCost(tight.relative_pose, bearings_i, bearings_j, truncation) <
+        TruncatedQuadraticCost(loose.relative_pose, bearings_i, bearings_j, truncation))) {
+    return loose;
+  }
+  InlierSet set = SelectInliers(tight.relative_pose, bearings_i, bearings_j, DegToRad(options.max_angular_error_deg),
+                                options.reject_points_behind);
+  tight.num_inliers = static_cast<int>(set.inliers.size());
+  tight.num_inliers_in_front = set.num_in_front;
+  tight.inliers = std::move(set.inliers);
+  return tight;
 }
 
 }  // namespace sfm_pruning

@@ -25,6 +25,15 @@ struct RelativePoseOptions {
   RansacOptions ransac = {/*max_iterations=*/10000, /*confidence=*/0.999, /*seed=*/0};
   // Ceres refinement rounds on the inliers, each followed by inlier re-selection; 0 disables.
   int refinement_rounds = 2;
+  // Model choice by precision (not in GLOMAP or COLMAP; 0 = off). With a ratio r in (0, 1) the
+  // RANSAC and the refinement also run at r * max_angular_error_deg, and of the two models the one
+  // with the lower truncated quadratic cost, sum over every correspondence of
+  // min(e^2, (r * max_angular_error_deg)^2), is kept; its inliers are then selected at the full
+  // threshold. Why: where the matches of a plane are joined by matches between copies of a texture
+  // repeated along the baseline (a street of identical facades), a loose threshold lets a wrong
+  // pose fit both sets loosely, and it wins the inlier count; the true pose fits the true matches
+  // more tightly (docs/global.md, "Model choice by precision"). Costs a second RANSAC per pair.
+  double precision_check_ratio = 0.0;
   // Drop inliers that triangulate behind either camera. Rays whose parallax is below the
   // inlier threshold are kept: their depth sign is noise (points at infinity).
   bool reject_points_behind = true;

@@ -91,7 +91,7 @@ void AddFeatureOptions(CLI::App* cmd, FeatureSettings* settings) {
   cmd->add_flag("--no_root_sift", settings->no_root_sift, "Plain SIFT descriptors instead of RootSIFT");
 }
 
-void AddMaxEpipolarErrorOption(CLI::App* cmd, double* max_epipolar_error_deg) {
+void AddVerificationOptions(CLI::App* cmd, double* max_epipolar_error_deg, double* precision_ratio) {
   cmd->add_option("--max_epipolar_error_deg", *max_epipolar_error_deg,
                   "Inlier threshold of the two-view verification: angle between a bearing and its epipolar "
                   "plane (0.25 deg ~ 5 px at a focal of 1200 px). Lower keeps fewer matches that lie near but "
@@ -99,6 +99,14 @@ void AddMaxEpipolarErrorOption(CLI::App* cmd, double* max_epipolar_error_deg) {
                   "baseline (docs/global.md)")
       ->check(CLI::PositiveNumber)
       ->check(CLI::Range(0.0, 90.0))
+      ->capture_default_str();
+  cmd->add_option("--verification_precision_ratio", *precision_ratio,
+                  "0 = off. With r in (0, 1), each pair's pose is also estimated at r times the threshold, and the "
+                  "model that fits the matches more tightly is kept (its inliers still selected at the full "
+                  "threshold): on a plane whose texture repeats along the baseline, the loose threshold can "
+                  "prefer a wrong pose that fits the true matches and the repeats together. Doubles the "
+                  "verification's RANSAC (docs/global.md)")
+      ->check(CLI::Range(0.0, 0.99))
       ->capture_default_str();
 }
 
@@ -127,7 +135,7 @@ void AddMatchOptions(CLI::App* cmd, MatchSettings* settings, bool standalone) {
   if (standalone) {
     cmd->add_option("--seed", settings->seed, "Seed of the kd-trees and of the verification's RANSAC")
         ->capture_default_str();
-    AddMaxEpipolarErrorOption(cmd, &settings->max_epipolar_error_deg);
+    AddVerificationOptions(cmd, &settings->max_epipolar_error_deg, &settings->verification_precision_ratio);
   }
 }
 
@@ -146,7 +154,8 @@ std::string SettingsKey(const MatchSettings& s) {
   return "pairs=" + s.pairs + "\nwindow=" + std::to_string(s.window) + "\nloop=" + std::to_string(s.loop) +
          "\npair_list=" + s.pair_list + "\nmatcher=" + s.matcher + "\nratio=" + Fixed(s.ratio, 6) +
          "\nmutual=" + std::to_string(!s.no_mutual) + "\nflann_checks=" + std::to_string(s.flann_checks) +
-         "\nseed=" + std::to_string(s.seed) + "\nmax_epipolar_error_deg=" + Fixed(s.max_epipolar_error_deg, 6) + "\n";
+         "\nseed=" + std::to_string(s.seed) + "\nmax_epipolar_error_deg=" + Fixed(s.max_epipolar_error_deg, 6) +
+         "\nverification_precision_ratio=" + Fixed(s.verification_precision_ratio, 6) + "\n";
 }
 
 int FrontEndThreads(int requested) {
@@ -232,6 +241,7 @@ MatchStageSummary RunMatchStage(const MatchSettings& settings, const sfm_pruning
   sfm_pruning::ViewGraphBuildOptions verify;
   verify.seed = settings.seed;
   verify.two_view.relative_pose.max_angular_error_deg = settings.max_epipolar_error_deg;
+  verify.two_view.relative_pose.precision_check_ratio = settings.verification_precision_ratio;
   verify.num_threads = num_threads;
   verify.keep_largest_component = false;
   sfm_pruning::ViewGraphBuildReport report;

@@ -49,11 +49,13 @@ struct MatchSettings {
   int flann_checks = 64;
   uint64_t seed = 0;
   double max_epipolar_error_deg = 0.25;  // the verification's inlier threshold
+  double verification_precision_ratio = 0.0;  // RelativePoseOptions::precision_check_ratio
 };
 
-// --max_epipolar_error_deg, the verification's inlier threshold: in `match`, and among the engine
-// options of reconstruct, run and prune.
-void AddMaxEpipolarErrorOption(CLI::App* cmd, double* max_epipolar_error_deg);
+// --max_epipolar_error_deg, the verification's inlier threshold, and --verification_precision_ratio
+// (RelativePoseOptions::precision_check_ratio): in `match`, and among the engine options of
+// reconstruct, run and prune.
+void AddVerificationOptions(CLI::App* cmd, double* max_epipolar_error_deg, double* precision_ratio);
 
 void AddInitOptions(CLI::App* cmd, InitSettings* settings);
 void AddFeatureOptions(CLI::App* cmd, FeatureSettings* settings);

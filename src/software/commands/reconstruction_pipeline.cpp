@@ -50,6 +50,7 @@ sfm_pruning::ViewGraph BuildVerifiedViewGraph(const EngineSettings& settings, co
   options.seed = settings.seed;
   options.num_threads = settings.num_threads;
   options.two_view.relative_pose.max_angular_error_deg = settings.max_epipolar_error_deg;
+  options.two_view.relative_pose.precision_check_ratio = settings.verification_precision_ratio;
   sfm_pruning::ViewGraph graph;
   try {
     graph = input.verified.empty()
@@ -139,6 +140,7 @@ nlohmann::json TimingsJson(const EngineSettings& settings, const sfm_pruning::Vi
   json["positioning"] = settings.positioning;
   json["positioning_tracks"] = settings.positioning_tracks;
   json["max_epipolar_error_deg"] = settings.max_epipolar_error_deg;
+  json["verification_precision_ratio"] = settings.verification_precision_ratio;
   if (settings.engine == "GLOBAL_PRUNED") {
     json["prune_distinctive_witness"] = settings.pruning.alignment.distinctive_witness_ratio;
     json["prune_model_audit"] = settings.pruning.audit.enabled;
@@ -254,7 +256,7 @@ void AddSolverOptions(CLI::App* cmd, EngineSettings* settings) {
                   "docs/global.md)")
       ->check(CLI::IsMember({"CONNECTED", "MATCH_STARS"}))
       ->capture_default_str();
-  AddMaxEpipolarErrorOption(cmd, &settings->max_epipolar_error_deg);
+  AddVerificationOptions(cmd, &settings->max_epipolar_error_deg, &settings->verification_precision_ratio);
   // Translation averaging builds its tracks after the solve, from the solved cameras: the option
   // would be ignored, so the combination is refused rather than run as if it had been honoured.
   // This takes the command's one parse-complete callback slot (reconstruct, run and prune set none).

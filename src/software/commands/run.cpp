@@ -91,6 +91,7 @@ void RunFromImages(const RunArguments& args, const fs::path& images, const fs::p
   MatchSettings match = args.match;
   match.seed = args.engine.seed;
   match.max_epipolar_error_deg = args.engine.max_epipolar_error_deg;
+  match.verification_precision_ratio = args.engine.verification_precision_ratio;
   const std::string match_key = HashKey(features_key + SettingsKey(match) + FileFingerprint(match.pair_list));
   timings.push_back(RunOrReuse(&manifest, "match", match_key, {matches_dir / "matches.e.bin"}, args.force, [&]() {
     const sfm_pruning::SfmData scene = read_scene();
