@@ -7,7 +7,7 @@
 
 #include <vector>
 
-#include "sfm_pruning/eval/synthetic_scene.hpp"
+#include "engine_test_scene.hpp"
 #include "sfm_pruning/global/view_graph_builder.hpp"
 #include "sfm_pruning/sfm/pose.hpp"
 
@@ -33,13 +33,10 @@ std::vector<double> RotationErrorsDeg(double precision_check_ratio) {
   const SyntheticScene& scene = Street();
   PairwiseMatches putative;
   for (const ViewPair& pair : kShortPairs) putative[pair] = scene.putative_matches.at(pair);
-  SfmData listing = scene.ground_truth;
-  listing.poses.clear();
-  listing.structure.clear();
   ViewGraphBuildOptions options;
   options.keep_largest_component = false;
   options.two_view.relative_pose.precision_check_ratio = precision_check_ratio;
-  const ViewGraph graph = BuildViewGraphFromMatches(options, listing, scene.features, putative);
+  const ViewGraph graph = BuildViewGraphFromMatches(options, testing::Listing(scene), scene.features, putative);
 
   std::vector<double> errors;
   for (const ViewPair& pair : kShortPairs) {
@@ -50,8 +47,8 @@ std::vector<double> RotationErrorsDeg(double precision_check_ratio) {
     }
     const Pose& first = scene.ground_truth.PoseOf(scene.ground_truth.views.at(pair.first));
     const Pose& second = scene.ground_truth.PoseOf(scene.ground_truth.views.at(pair.second));
-    const Eigen::Matrix3d true_rotation = second.rotation * first.rotation.transpose();
-    errors.push_back(RadToDeg(RotationAngleBetween(edge->relative_pose.rotation, true_rotation)));
+    const RelativePose truth = RelativePoseBetween(first, second);
+    errors.push_back(RadToDeg(RotationAngleBetween(edge->relative_pose.rotation, truth.rotation)));
   }
   return errors;
 }
