@@ -81,6 +81,39 @@ TEST(GlobalPositioning, DeterministicForASeed) {
   EXPECT_TRUE(first == second);
 }
 
+TEST(GlobalPositioning, RandomStartsKeepTheStartAgreeingWithMostRays) {
+  testing::PositioningSceneOptions scene_options = testing::SmallSceneOptions();
+  scene_options.pixel_noise_std = 0.5;
+  scene_options.outlier_ratio = 0.1;
+  testing::PositioningScene scene = testing::MakePositioningScene(scene_options);
+  const std::vector<Track> tracks = TracksOf(scene);
+  SfmData single = scene.sfm_data, restarted = scene.sfm_data, again = scene.sfm_data;
+  const PositioningResult one = PositionCamerasAndPoints({}, scene.rotations, tracks, scene.features, &single);
+  GlobalPositioningOptions options;
+  options.solver.num_random_starts = 4;
+  const PositioningResult four = PositionCamerasAndPoints(options, scene.rotations, tracks, scene.features, &restarted);
+  ASSERT_TRUE(one.success && four.success) << one.message << four.message;
+
+  // One start is the plain solve from the seed, and it is the first of the four.
+  EXPECT_EQ(one.num_random_starts, 1);
+  ASSERT_EQ(one.consistent_constraints_per_start.size(), 1u);
+  ASSERT_EQ(four.consistent_constraints_per_start.size(), 4u);
+  EXPECT_EQ(four.consistent_constraints_per_start[0], one.consistent_constraints_per_start[0]);
+  // The kept start is one that agrees with the most rays, and every start lands on the scene here
+  // (10 % outliers leave one basin), so the choice only moves the result within the noise.
+  const auto& counts = four.consistent_constraints_per_start;
+  EXPECT_EQ(counts[four.selected_start], *std::max_element(counts.begin(), counts.end()));
+  for (const size_t count : counts) EXPECT_GT(count, counts[four.selected_start] * 95 / 100);
+  EXPECT_LT(testing::MaxRelativeCenterError(scene.true_poses, restarted), 0.01);
+  if (four.selected_start == 0) {
+    EXPECT_TRUE(single == restarted);
+  }
+
+  // Deterministic for a seed, starts included.
+  PositionCamerasAndPoints(options, scene.rotations, tracks, scene.features, &again);
+  EXPECT_TRUE(again == restarted);
+}
+
 TEST(GlobalPositioning, FailsWithoutTracksAndLeavesTheSceneUntouched) {
   testing::PositioningScene scene = testing::MakePositioningScene({});
   const SfmData before = scene.sfm_data;

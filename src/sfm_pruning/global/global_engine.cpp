@@ -56,6 +56,7 @@ PositioningSolverOptions WithEngineSolverSettings(const GlobalEngineOptions& opt
   solver.function_tolerance = options.positioning_function_tolerance;
   solver.max_num_iterations = options.positioning_max_num_iterations;
   solver.max_num_resolve_iterations = options.positioning_max_num_resolve_iterations;
+  solver.num_random_starts = options.positioning_random_starts;
   solver.progress = progress;
   return solver;
 }

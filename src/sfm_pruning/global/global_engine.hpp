@@ -84,6 +84,10 @@ struct GlobalEngineOptions {
   // ones it runs on without changing the result (courtyard: into the cap of 100, 0.6 s more than
   // with 60, AUC@10 22.02 against 22.06).
   int positioning_max_num_resolve_iterations = 60;
+  // Random starts of each positioning solve (both methods; PositioningSolverOptions::
+  // num_random_starts): the one whose solution agrees with the most rays is kept. 1 = GLOMAP's
+  // single start; each further start costs one more solve.
+  int positioning_random_starts = 1;
   double intermediate_function_tolerance = 1e-4;  // adjustments before the last
   double final_function_tolerance = 1e-5;         // the last adjustment (GLOMAP's value)
   // Iteration cap of the adjustments before the last (the last keeps bundle.max_num_iterations).

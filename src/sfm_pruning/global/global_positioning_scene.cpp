@@ -1,19 +1,59 @@
 #include "sfm_pruning/global/global_positioning_scene.hpp"
 
+#include <algorithm>
+
 #include "sfm_pruning/sfm/pose.hpp"
 
 namespace sfm_pruning {
 
+namespace {
+
+// Seed of random start k: start 0 is the seed itself (one start reproduces the single solve);
+// the others are spread by the 64-bit golden ratio, as splitmix64 spreads its states.
+uint64_t StartSeed(uint64_t seed, int start) {
+  return seed + static_cast<uint64_t>(start) * 0x9E3779B97F4A7C15ULL;
+}
+
+size_t CountConsistentConstraints(const std::vector<RayConstraint>& constraints,
+                                  const std::vector<Eigen::Vector3d>& positions, double threshold_deg) {
+  size_t count = 0;
+  for (const RayConstraint& constraint : constraints) {
+    if (RayConstraintResidualDeg(constraint, positions) <= threshold_deg) ++count;
+  }
+  return count;
+}
+
+}  // namespace
+
 PositioningSolverSummary SolveFromRandomStart(const PositioningSolverOptions& options, size_t num_positions,
                                               const std::vector<RayConstraint>& constraints, const std::string& stage,
                                               std::vector<Eigen::Vector3d>* positions, PositioningResult* result) {
-  *positions = RandomPositions(num_positions, options.init_cube_half_size, options.seed);
-  const PositioningSolverSummary summary = SolveRayAlignment(options, constraints, 0, stage, positions);
-  result->message = summary.termination;
-  result->num_solver_iterations = summary.num_iterations;
-  result->initial_cost = summary.initial_cost;
-  result->final_cost = summary.final_cost;
-  return summary;
+  const int num_starts = std::max(options.num_random_starts, 1);
+  PositioningSolverSummary best;
+  size_t best_consistent = 0;
+  result->consistent_constraints_per_start.clear();
+  for (int start = 0; start < num_starts; ++start) {
+    std::vector<Eigen::Vector3d> candidate =
+        RandomPositions(num_positions, options.init_cube_half_size, StartSeed(options.seed, start));
+    const PositioningSolverSummary summary = SolveRayAlignment(options, constraints, 0, stage, &candidate);
+    const size_t consistent =
+        summary.usable ? CountConsistentConstraints(constraints, candidate, options.rejection_threshold_deg) : 0;
+    result->consistent_constraints_per_start.push_back(consistent);
+    const bool better = start == 0 || (summary.usable && !best.usable) ||
+                        (summary.usable && (consistent > best_consistent ||
+                                            (consistent == best_consistent && summary.final_cost < best.final_cost)));
+    if (!better) continue;
+    best = summary;
+    best_consistent = consistent;
+    *positions = std::move(candidate);
+    result->selected_start = start;
+  }
+  result->num_random_starts = num_starts;
+  result->message = best.termination;
+  result->num_solver_iterations = best.num_iterations;
+  result->initial_cost = best.initial_cost;
+  result->final_cost = best.final_cost;
+  return best;
 }
 
 double RayAngularResidualDeg(const PositioningObservation& observation, const Eigen::Vector3d& center,

@@ -30,14 +30,22 @@ struct PositioningResult {
   size_t num_dropped_tracks = 0;
 
   size_t num_solved_tracks = 0;  // tracks whose points the solver estimated (the rest: triangulated)
-  int num_solver_iterations = 0;
-  double initial_cost = 0.0;  // solver cost (0.5 * sum of robustified squared residuals)
+  int num_solver_iterations = 0;  // the kept start's
+  double initial_cost = 0.0;  // solver cost (0.5 * sum of robustified squared residuals), kept start
   double final_cost = 0.0;
+  // Random starts solved, the one kept (0 = the start from the seed itself) and, per start, the
+  // solve's constraints that agree with its solution (within the rejection threshold).
+  int num_random_starts = 0;
+  int selected_start = 0;
+  std::vector<size_t> consistent_constraints_per_start;
 };
 
-// Both methods' solve: positions from the random start of options (seed), SolveRayAlignment with
+// Both methods' solve: positions from a random start (options.seed), SolveRayAlignment with
 // position 0 (the smallest view id) as the translation gauge, and the solver's record (message,
-// iterations, costs) copied into `result`.
+// iterations, costs) copied into `result`. With options.num_random_starts = n > 1 it solves from n
+// starts (start k seeded from seed and k) and keeps the usable one whose solution agrees
+// with the most constraints (ray within rejection_threshold_deg); ties go to the lower final
+// cost, then to the earlier start. Deterministic for a seed.
 PositioningSolverSummary SolveFromRandomStart(const PositioningSolverOptions& options, size_t num_positions,
                                               const std::vector<RayConstraint>& constraints, const std::string& stage,
                                               std::vector<Eigen::Vector3d>* positions, PositioningResult* result);

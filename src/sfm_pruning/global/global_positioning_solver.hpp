@@ -47,6 +47,11 @@ struct PositioningSolverOptions {
   // start at 1, which matches a cube of size ~1.
   double init_cube_half_size = 1.0;
   uint64_t seed = 0;
+  // Random starts tried by SolveFromRandomStart (global_positioning_scene.hpp); 1 = one solve from
+  // `seed`. The problem is not convex: on scenes whose repeated structure pulls views onto one
+  // another, a start can end in a folded minimum. Each start's result is scored by its rays that
+  // agree with it (within rejection_threshold_deg), as RANSAC scores a model by its inliers.
+  int num_random_starts = 1;
 
   // Huber still lets gross outliers bias the solution. After a solve, constraints whose ray
   // misses p_target - p_origin by more than rejection_threshold_deg are dropped and the problem

@@ -139,6 +139,7 @@ nlohmann::json TimingsJson(const EngineSettings& settings, const sfm_pruning::Vi
   json["engine"] = settings.engine;
   json["positioning"] = settings.positioning;
   json["positioning_tracks"] = settings.positioning_tracks;
+  json["positioning_random_starts"] = settings.positioning_random_starts;
   json["max_epipolar_error_deg"] = settings.max_epipolar_error_deg;
   json["verification_precision_ratio"] = settings.verification_precision_ratio;
   if (settings.engine == "GLOBAL_PRUNED") {
@@ -179,6 +180,9 @@ nlohmann::json TimingsJson(const EngineSettings& settings, const sfm_pruning::Vi
                        {"solved_tracks", engine.positioning.num_solved_tracks},
                        {"landmarks", engine.positioning.num_landmarks},
                        {"observations", engine.positioning.num_observations},
+                       {"random_starts", engine.positioning.num_random_starts},
+                       {"selected_start", engine.positioning.selected_start},
+                       {"consistent_rays_per_start", engine.positioning.consistent_constraints_per_start},
                        {"termination", engine.positioning.message}}},
                      {"bundle_adjustments", std::move(adjustments)}};
   json["dropped_views"] = std::move(dropped);
@@ -234,6 +238,9 @@ sfm_pruning::PrunedGlobalEngineOptions PrunedEngineOptions(const EngineSettings&
   options.pruning.partition.engine.positioning = Positioning(settings);
   options.engine.positioning_tracks = PositioningTracks(settings);
   options.pruning.partition.engine.positioning_tracks = PositioningTracks(settings);
+  // The final solve only: the per-community solves are many and small, and the consistency tests
+  // already judge each of them.
+  options.engine.positioning_random_starts = settings.positioning_random_starts;
   options.SetSeedAndThreads(settings.seed, settings.num_threads);
   return options;
 }
@@ -255,6 +262,11 @@ void AddSolverOptions(CLI::App* cmd, EngineSettings* settings) {
                   "copies of a repeated texture misplaces one observation instead of merging two tracks; "
                   "docs/global.md)")
       ->check(CLI::IsMember({"CONNECTED", "MATCH_STARS"}))
+      ->capture_default_str();
+  cmd->add_option("--positioning_random_starts", settings->positioning_random_starts,
+                  "Random starts of the positioning solve (GLOBAL_PRUNED: of its final solve); the solution "
+                  "that agrees with the most observation rays is kept (1: a single start, as GLOMAP)")
+      ->check(CLI::Range(1, 1000))
       ->capture_default_str();
   AddVerificationOptions(cmd, &settings->max_epipolar_error_deg, &settings->verification_precision_ratio);
   // Translation averaging builds its tracks after the solve, from the solved cameras: the option
@@ -298,6 +310,7 @@ Solution Solve(const EngineSettings& settings, const ReconstructionInput& input,
     options.num_threads = settings.num_threads;
     options.positioning = Positioning(settings);
     options.positioning_tracks = PositioningTracks(settings);
+    options.positioning_random_starts = settings.positioning_random_starts;
     options.bundle = bundle;
     if (schedule == Schedule::kFocalSearch) options = sfm_pruning::WithFocalSearchSchedule(options);
     RunGlobalEngine(options, graph, scene, input.features, &solution.model, &solution.report, TerminalProgressBar());

@@ -27,13 +27,15 @@ struct EngineSettings {
   int num_threads = 1;
   std::string positioning = "GLOMAP";  // or TRANSLATION_AVERAGING
   std::string positioning_tracks = "CONNECTED";  // or MATCH_STARS
+  int positioning_random_starts = 1;  // GlobalEngineOptions::positioning_random_starts
   double max_epipolar_error_deg = 0.25;  // RelativePoseOptions::max_angular_error_deg
   double verification_precision_ratio = 0.0;  // RelativePoseOptions::precision_check_ratio
   sfm_pruning::ViewGraphPruningOptions pruning;  // GLOBAL_PRUNED and `prune`
   IntrinsicsSettings intrinsics;                 // reconstruct and run
 };
 
-// Adds --seed, --num_threads, --positioning, --positioning_tracks and the verification options
+// Adds --seed, --num_threads, --positioning, --positioning_tracks, --positioning_random_starts and
+// the verification options
 // (--max_epipolar_error_deg, --verification_precision_ratio) to `cmd`.
 void AddSolverOptions(CLI::App* cmd, EngineSettings* settings);
 
