@@ -244,16 +244,40 @@ double ConsensusShare(const Consensus& consensus, const std::vector<EdgeDistinct
   return inliers > 0.0 ? weight / inliers : -1.0;
 }
 
-// The most distinctive voting edge with a depth scale (the first on ties); empty when none has one.
-std::optional<size_t> MostDistinctiveEdge(const std::vector<EdgeDistinctiveness>& distinctiveness) {
-  std::optional<size_t> best;
+// The median depth scale of the voting edges that have one. Every edge measures the same ratio of
+// the two frames' units, a twin edge too: placing j by a copy keeps j's distance to what it sees
+// (street, seed 0: the twins' scales 1.288-1.293, the true edge's 1.285).
+std::optional<double> MedianDepthScale(const std::vector<EdgeDistinctiveness>& distinctiveness) {
+  std::vector<double> scales;
+  for (const EdgeDistinctiveness& edge : distinctiveness) {
+    if (edge.depth_scale && *edge.depth_scale > 0.0) scales.push_back(*edge.depth_scale);
+  }
+  if (scales.empty()) return std::nullopt;
+  const auto middle = scales.begin() + static_cast<std::ptrdiff_t>(scales.size() / 2);
+  std::nth_element(scales.begin(), middle, scales.end());
+  return *middle;
+}
+
+// The most distinctive voting edge (the first on ties) with the scale of its candidate: its own
+// depth scale, else the median of the others' (a true edge onto a two-view subgraph often shares
+// fewer than min_correspondences landmarks with it: street, seed 5, 5-7 and 6-7, shares 0.16 and
+// 0.17 against the twins' 0.05, had none). Empty when no voting edge has a depth scale.
+struct Witness {
+  size_t edge = 0;
+  double scale = 0.0;
+};
+std::optional<Witness> MostDistinctiveEdge(const std::vector<EdgeDistinctiveness>& distinctiveness) {
+  const std::optional<double> median_scale = MedianDepthScale(distinctiveness);
+  if (!median_scale) return std::nullopt;
+  std::optional<Witness> best;
   double best_share = -1.0;
   for (size_t k = 0; k < distinctiveness.size(); ++k) {
     const EdgeDistinctiveness& edge = distinctiveness[k];
-    if (!edge.depth_scale || !(*edge.depth_scale > 0.0) || !(edge.inliers > 0.0)) continue;
+    if (!(edge.inliers > 0.0)) continue;
     const double share = edge.weight / edge.inliers;
     if (share > best_share) {
-      best = k;
+      const bool own = edge.depth_scale && *edge.depth_scale > 0.0;
+      best = Witness{k, own ? *edge.depth_scale : *median_scale};
       best_share = share;
     }
   }
@@ -307,14 +331,15 @@ void RunRansac(const std::vector<ChainedRelativePose>& chains, const std::vector
   }
   const bool supported = std::any_of(candidates.begin(), candidates.end(),
                                      [](const Candidate& c) { return c.consensus.count > 0; });
-  const std::optional<size_t> witness =
+  const std::optional<Witness> witness =
       options.distinctive_witness_ratio > 0.0 ? MostDistinctiveEdge(distinctiveness) : std::nullopt;
   // No sample made a hypothesis any edge supports (e.g. every edge lands on one view), but the most
   // distinctive edge has a scale of its own: its hypothesis decides, before the rotation alone.
   const bool witness_decides = !supported && witness.has_value();
-  const size_t witness_edge = witness.value_or(0);  // (value_or: GCC 12 warns on *witness below)
+  const Witness witness_choice = witness.value_or(Witness{});  // (value_or: GCC 12 warns on *witness below)
+  const size_t witness_edge = witness_choice.edge;
   if (witness_decides) {
-    candidates.assign(1, WitnessCandidate(chains, witness_edge, *distinctiveness[witness_edge].depth_scale, options));
+    candidates.assign(1, WitnessCandidate(chains, witness_edge, witness_choice.scale, options));
   } else if (!supported && options.rotation_only_fallback &&
              ApplyRotationOnlyConsensus(chains, voter_edge_index, options, result)) {
     return;
@@ -332,7 +357,7 @@ void RunRansac(const std::vector<ChainedRelativePose>& chains, const std::vector
     return witness.has_value() && c.consensus.inlier[witness_edge];
   });
   if (witness.has_value() && !witness_held) {
-    candidates.push_back(WitnessCandidate(chains, witness_edge, *distinctiveness[witness_edge].depth_scale, options));
+    candidates.push_back(WitnessCandidate(chains, witness_edge, witness_choice.scale, options));
     witness_candidate = static_cast<int>(candidates.size()) - 1;
   }
   size_t chosen = 0;

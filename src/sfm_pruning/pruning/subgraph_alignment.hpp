@@ -100,7 +100,8 @@ struct SubgraphAlignmentOptions {
   // edge's only the repeated structure, which the views of every copy match): on the synthetic
   // street every twin edge has a share ≤ 0.062, the true edges of the thin stretches 0.14–0.32.
   // So e*'s own hypothesis (e* = the pair's most distinctive voting edge; its chained pose at its
-  // depth scale, edge_depth_scale.hpp, refitted on its consensus while that keeps e*) joins the
+  // depth scale, edge_depth_scale.hpp, or at the median of the other voting edges' depth scales
+  // when it has none, refitted on its consensus while that keeps e*) joins the
   // RANSAC candidates when none of them holds e*, before the coverage rule chooses; when the chosen
   // consensus leaves e* out and its edges' distinctive share is below distinctive_witness_ratio
   // times that of e*'s candidate, the latter decides the pair; and when no sample gives a
