@@ -354,20 +354,33 @@ std::map<ViewPair, double> SharesByKind(const ViewGraph& graph, const std::vecto
   return weights;
 }
 
-TEST(DistinctiveWitness, KeepsAMinorityOfTrueEdgesThatLandOnOneView) {
+// The scene of the witness tests below: the true edges 6-8 and 7-8, the twin edges turned 30° about
+// the vertical, true shares 0.3 per inlier against the twins' 0.05, samples of two edges.
+struct MinorityOnOneView {
   PruningTestScene scene = MakePruningTestScene(16, 60, 11);
   const std::vector<ViewPair> true_edges = {{6, 8}, {7, 8}};
   const std::vector<ViewPair> twin_edges = {{0, 9}, {1, 10}, {2, 11}, {3, 12}, {4, 13}, {5, 14}};
-  for (const ViewPair& edge : true_edges) scene.AddExactEdge(edge.first, edge.second);
   Similarity twin;
-  twin.rotation = ExpSO3(DegToRad(30.0) * Eigen::Vector3d::UnitZ());
-  for (const ViewPair& edge : twin_edges) scene.AddTwinEdge(edge.first, edge.second, twin);
-  const SubgraphSolution k1 = scene.Solution(kViewsK1, RandomSimilarity(1, kScaleK1));
-  const SubgraphSolution k2 = scene.Solution(kViewsK2, RandomSimilarity(2, kScaleK2));
-  const std::map<ViewPair, double> weights = SharesByKind(scene.graph, true_edges, 0.3, 0.05);
+  const Similarity frame_k2 = RandomSimilarity(2, kScaleK2);
+  SubgraphSolution k1, k2;
+  std::map<ViewPair, double> weights;
   SubgraphAlignmentOptions options;
-  options.sample_fraction = 0.3;  // samples of two edges
-  options.distinctive_witness_ratio = 0.5;
+
+  MinorityOnOneView() {
+    for (const ViewPair& edge : true_edges) scene.AddExactEdge(edge.first, edge.second);
+    twin.rotation = ExpSO3(DegToRad(30.0) * Eigen::Vector3d::UnitZ());
+    for (const ViewPair& edge : twin_edges) scene.AddTwinEdge(edge.first, edge.second, twin);
+    k1 = scene.Solution(kViewsK1, RandomSimilarity(1, kScaleK1));
+    k2 = scene.Solution(kViewsK2, frame_k2);
+    weights = SharesByKind(scene.graph, true_edges, 0.3, 0.05);
+    options.sample_fraction = 0.3;  // samples of two edges
+    options.distinctive_witness_ratio = 0.5;
+  }
+};
+
+TEST(DistinctiveWitness, KeepsAMinorityOfTrueEdgesThatLandOnOneView) {
+  MinorityOnOneView minority;
+  auto& [scene, true_edges, twin_edges, twin, frame_k2, k1, k2, weights, options] = minority;
 
   const SubgraphAlignmentResult without =
       AlignSubgraphPair(scene.graph, k1, k2, scene.views_and_intrinsics, scene.features, options);
@@ -401,16 +414,8 @@ TEST(DistinctiveWitness, KeepsAMinorityOfTrueEdgesThatLandOnOneView) {
 // every edge measures the same ratio of the frames' units: the witness takes the median of the
 // others' depth scales and still gives the true hypothesis (street, seed 5: 73.2 -> 95.3).
 TEST(DistinctiveWitness, BorrowsTheScaleWhenTheMostDistinctiveEdgeHasNone) {
-  PruningTestScene scene = MakePruningTestScene(16, 60, 11);
-  const std::vector<ViewPair> true_edges = {{6, 8}, {7, 8}};
-  const std::vector<ViewPair> twin_edges = {{0, 9}, {1, 10}, {2, 11}, {3, 12}, {4, 13}, {5, 14}};
-  for (const ViewPair& edge : true_edges) scene.AddExactEdge(edge.first, edge.second);
-  Similarity twin;
-  twin.rotation = ExpSO3(DegToRad(30.0) * Eigen::Vector3d::UnitZ());
-  for (const ViewPair& edge : twin_edges) scene.AddTwinEdge(edge.first, edge.second, twin);
-  const SubgraphSolution k1 = scene.Solution(kViewsK1, RandomSimilarity(1, kScaleK1));
-  const Similarity frame_k2 = RandomSimilarity(2, kScaleK2);
-  SubgraphSolution k2 = scene.Solution(kViewsK2, frame_k2);
+  MinorityOnOneView minority;
+  auto& [scene, true_edges, twin_edges, twin, frame_k2, k1, k2, weights, options] = minority;
   for (auto& [id, landmark] : k2.landmarks) landmark.observations.erase(8);
   // The copies the twin edges' features of j see, as landmarks of k2 observed by j alone.
   IndexT next_id = static_cast<IndexT>(scene.points.size());
@@ -421,10 +426,6 @@ TEST(DistinctiveWitness, BorrowsTheScaleWhenTheMostDistinctiveEdgeHasNone) {
       copy.observations[edge.second] = Observation{scene.features.at(edge.second).Position(match.j), match.j};
     }
   }
-  const std::map<ViewPair, double> weights = SharesByKind(scene.graph, true_edges, 0.3, 0.05);
-  SubgraphAlignmentOptions options;
-  options.sample_fraction = 0.3;
-  options.distinctive_witness_ratio = 0.5;
   const SubgraphAlignmentResult result =
       AlignSubgraphPair(scene.graph, k1, k2, scene.views_and_intrinsics, scene.features, options, &weights);
   ASSERT_EQ(result.status, SubgraphAlignmentStatus::kAligned);
