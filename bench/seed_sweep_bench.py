@@ -68,6 +68,9 @@ def main():
     parser.add_argument("--variant", action="append", default=[], metavar="LABEL=ARGS",
                         help="a row LABEL with these extra `prunesfm run` arguments (repeatable)")
     parser.add_argument("--target", type=float, help="AUC counted as a success (default: 90 real, 95 synthetic)")
+    parser.add_argument("--fragment", help="section name to write (default: seed_sweep, or seed_sweep_synthetic "
+                                           "with --synthetic); another name keeps those sections and adds one")
+    parser.add_argument("--title", help="section title (default: by the kind of scenes)")
     args = parser.parse_args()
     prunesfm = str(Path(args.prunesfm).resolve()) if args.prunesfm else str(rb.find_prunesfm(None))
     if "-" in args.seeds:
@@ -80,7 +83,7 @@ def main():
     variants = [v.split("=", 1) for v in (args.variant or default_variants)]
     auc_key, target = ("10", 95.0) if synthetic else ("5", 90.0)
     target = args.target if args.target is not None else target
-    title = "Seed sweep on synthetic scenes" if synthetic else "Seed sweep on the real ambiguous scenes"
+    title = args.title or ("Seed sweep on synthetic scenes" if synthetic else "Seed sweep on the real ambiguous scenes")
     lines = bs.header_lines(title, sys.argv, prunesfm)
     scored = (f"`prunesfm synth --scene S --seed {args.seed}`, AUC@{auc_key} against its ground truth" if synthetic
               else f"each scene's exhaustive COLMAP database, AUC@{auc_key} against the sequential reference "
@@ -113,7 +116,7 @@ def main():
             lines.append(f"| {scene} | {label}{(' `' + extra + '`') if extra else ''} | "
                          f"{', '.join(f'{a:.1f}' for a in aucs)} | {successes} of {len(aucs)} |")
     (base / "results.json").write_text(json.dumps(results, indent=2) + "\n")
-    bs.write_fragment("seed_sweep_synthetic" if synthetic else "seed_sweep", lines)
+    bs.write_fragment(args.fragment or ("seed_sweep_synthetic" if synthetic else "seed_sweep"), lines)
     return 0
 
 

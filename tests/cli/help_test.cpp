@@ -1,3 +1,7 @@
+#include <string>
+#include <utility>
+#include <vector>
+
 #include <gtest/gtest.h>
 
 #include "run_prunesfm.hpp"
@@ -49,6 +53,25 @@ TEST(Cli, ModelAuditIsOfferedOnlyWhereTheGraphIsSolved) {
   const CommandResult prune_help = RunPrunesfm({"prune", "--help"});
   EXPECT_NE(prune_help.out.find("--prune_unverified_max_rotation_deg"), std::string::npos);
   EXPECT_NE(run.out.find("--prune_unverified_max_rotation_deg"), std::string::npos);
+}
+
+TEST(Cli, OutOfRangeNumbersSayWhatIsExpectedInOneLine) {
+  const std::vector<std::pair<std::vector<std::string>, std::string>> cases = {
+      {{"run", "--num_threads", "0"}, "--num_threads: must be positive, got 0"},
+      {{"run", "--positioning_random_starts", "0"}, "--positioning_random_starts"},
+      {{"run", "--prune_max_depth", "-1"}, "--prune_max_depth: must be zero or more, got -1"},
+      {{"run", "--prune_louvain_resolution", "abc"}, "expected a number, got 'abc'"}};
+  for (const auto& [arguments, message] : cases) {
+    std::vector<std::string> argv = arguments;
+    for (const char* rest : {"--database", "/nonexistent/database.db", "--image_path", "/nonexistent",
+                             "--output_path", "/tmp/prunesfm-never-written"}) {
+      argv.push_back(rest);
+    }
+    const CommandResult result = RunPrunesfm(argv);
+    EXPECT_NE(result.exit_code, 0) << arguments[1];
+    EXPECT_NE(result.err.find(message), std::string::npos) << result.err;
+    EXPECT_LT(result.err.find('\n'), 200u) << result.err;  // no 309-digit bound
+  }
 }
 
 TEST(Cli, MissingInputFileGivesOneLineNamingTheFile) {

@@ -9,6 +9,7 @@
 
 #include "sfm_pruning/util/parallel_for.hpp"
 #include "sfm_pruning/view_graph/distinctive_weights.hpp"
+#include "sfm_pruning/view_graph/spectral_bisection.hpp"
 
 namespace sfm_pruning {
 namespace {
@@ -84,7 +85,15 @@ class Partitioner {
         induced.MutableEdge(pair.first, pair.second)->weight = louvain_weights_.at(pair);
       }
     }
-    const LouvainResult louvain = DetectCommunitiesLouvain(induced, options_.louvain);
+    LouvainResult louvain = DetectCommunitiesLouvain(induced, options_.louvain);
+    // Only the root reaches Split without a failed consistency test, and it keeps Louvain's answer.
+    const bool bisect = louvain.communities.size() < 2 && index != 0 && options_.bisect_unsplittable &&
+                        views.size() >= 4;  // halves of two views or more: a single view has no landmarks
+    if (bisect) {
+      const auto [first, second] = SpectralBisection(induced);
+      louvain.communities = {first, second};
+      result_.nodes[static_cast<size_t>(index)].bisected = true;
+    }
     if (louvain.communities.size() < 2) return false;
     std::vector<int> children;
     for (const NodeGroup& community : louvain.communities) {

@@ -8,7 +8,7 @@
 //   - it has at most tiny_subgraph_size views (kTiny): 1 view gets the identity pose and no
 //     points; 2 views are reconstructed by the engine (min track length 2), and when the engine
 //     fails they get the edge's relative pose (first view at the identity) and no points;
-//   - Louvain returns it as a single community (kUnsplittable);
+//   - Louvain returns it as a single community (kUnsplittable), unless bisect_unsplittable cuts it;
 //   - it sits at max_depth (kMaxDepth) or recursion is off (kSinglePass).
 // The root (depth 0) is the whole input graph; it is always split first, never solved unless
 // Louvain cannot split it. Every node of the tree is kept for the report.
@@ -49,6 +49,14 @@ struct RecursivePartitionOptions {
   int num_threads = 1;                 // communities solved at the same time
   size_t tiny_subgraph_size = 2;       // communities of at most this many views are accepted
   int max_depth = 8;                   // nodes at this depth are not split again
+  // An inconsistent community that Louvain returns whole is cut in two by spectral bisection
+  // (view_graph/spectral_bisection.hpp) instead of being accepted with its wrong edge, when it has
+  // at least four views (a half of one view would have no landmarks to place its neighbours with).
+  // Not in the paper; false = METHOD.md's termination. On the synthetic street
+  // the thin run's {10-13} holds the twin-dominated edge 10-13, fails the translation test and was
+  // accepted as unsplittable; bisected, the inter-subgraph pruning judges that edge
+  // (docs/pruning.md).
+  bool bisect_unsplittable = false;
 };
 
 enum class SubgraphStatus {
@@ -79,6 +87,7 @@ struct SubgraphNode {
   ConsistencyReport consistency;  // violations + error summaries (empty when not tested)
   double seconds = 0.0;           // engine + tests of this node
   int accepted_index = -1;        // index in `accepted` when accepted
+  bool bisected = false;          // split by spectral bisection (bisect_unsplittable), not Louvain
 };
 
 struct AcceptedSubgraph {

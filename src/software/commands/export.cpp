@@ -14,6 +14,7 @@
 #include "sfm_pruning/util/error.hpp"
 #include "software/cli_support.hpp"
 #include "software/commands.hpp"
+#include "software/cli_checks.hpp"
 
 namespace prunesfm {
 namespace {
@@ -122,7 +123,7 @@ void AddExportCommand(CLI::App& app) {
       ->capture_default_str();
   cmd->add_option("--num_threads", args->num_threads,
                   "Threads for reading and undistorting images (output does not depend on it)")
-      ->check(CLI::PositiveNumber)
+      ->check(PositiveValue())
       ->capture_default_str();
   cmd->callback([args]() { RunExport(*args); });
 }

@@ -5,6 +5,7 @@
 #include "sfm_pruning/io/openmvg_sfm_data.hpp"
 #include "software/commands.hpp"
 #include "software/commands/front_end_stages.hpp"
+#include "software/cli_checks.hpp"
 
 namespace prunesfm {
 namespace {
@@ -33,7 +34,7 @@ void AddFeaturesCommand(CLI::App& app) {
   auto args = std::make_shared<FeaturesArguments>();
   cmd->add_option("--sfm_data,-s", args->sfm_data, "sfm_data.json from 'prunesfm init'")->required();
   cmd->add_option("--output,-o", args->output, "Folder of the feature files (OpenMVG's matches folder)")->required();
-  cmd->add_option("--num_threads", args->num_threads, "Threads (default: every core)")->check(CLI::PositiveNumber);
+  cmd->add_option("--num_threads", args->num_threads, "Threads (default: every core)")->check(PositiveValue());
   AddFeatureOptions(cmd, &args->settings);
   cmd->callback([args]() { RunFeatures(*args); });
 }

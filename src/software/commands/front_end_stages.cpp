@@ -17,6 +17,7 @@
 #include "sfm_pruning/io/openmvg_sfm_data.hpp"
 #include "sfm_pruning/util/error.hpp"
 #include "software/cli_support.hpp"
+#include "software/cli_checks.hpp"
 
 namespace prunesfm {
 namespace fs = std::filesystem;
@@ -61,15 +62,15 @@ sfm_pruning::PairSet SelectPairs(const MatchSettings& settings, const sfm_prunin
 
 void AddInitOptions(CLI::App* cmd, InitSettings* settings) {
   cmd->add_option("--focal", settings->focal, "Focal length in pixels of every camera (a prior: refined in bundle adjustment like an EXIF focal)")
-      ->check(CLI::PositiveNumber);
+      ->check(PositiveValue());
   cmd->add_option("--k_file", settings->k_file, "K matrix file (9 numbers, e.g. Strecha's K.txt): focal and principal point (a calibration: held)")
       ->check(CLI::ExistingFile);
   cmd->add_option("--sensor_width", settings->sensor_width_mm,
                   "Sensor width in mm, used with the EXIF focal in mm before the 35 mm equivalent")
-      ->check(CLI::PositiveNumber);
+      ->check(PositiveValue());
   cmd->add_option("--default_focal_factor", settings->default_focal_factor,
                   "Without --focal, K or EXIF: focal = this x max(width, height), marked as a guess")
-      ->check(CLI::PositiveNumber)
+      ->check(PositiveValue())
       ->capture_default_str();
   cmd->add_option("--camera_model", settings->camera_model, "Intrinsic model (distortion starts at zero)")
       ->check(CLI::IsMember({"pinhole", "pinhole_radial_k1", "pinhole_radial_k3", "pinhole_brown_t2"}))
@@ -82,11 +83,11 @@ void AddInitOptions(CLI::App* cmd, InitSettings* settings) {
 
 void AddFeatureOptions(CLI::App* cmd, FeatureSettings* settings) {
   cmd->add_option("--max_features", settings->max_features, "Strongest SIFT features kept per image")
-      ->check(CLI::PositiveNumber)
+      ->check(PositiveValue())
       ->capture_default_str();
   cmd->add_option("--max_image_size", settings->max_image_size,
                   "Images are downscaled so that max(width, height) <= this for extraction")
-      ->check(CLI::PositiveNumber)
+      ->check(PositiveValue())
       ->capture_default_str();
   cmd->add_flag("--no_root_sift", settings->no_root_sift, "Plain SIFT descriptors instead of RootSIFT");
 }
@@ -97,7 +98,7 @@ void AddVerificationOptions(CLI::App* cmd, double* max_epipolar_error_deg, doubl
                   "plane (0.25 deg ~ 5 px at a focal of 1200 px). Lower keeps fewer matches that lie near but "
                   "not on their epipolar line, such as those between copies of a texture repeated along the "
                   "baseline (docs/global.md)")
-      ->check(CLI::PositiveNumber)
+      ->check(PositiveValue())
       ->check(CLI::Range(0.0, 90.0))
       ->capture_default_str();
   cmd->add_option("--verification_precision_ratio", *precision_ratio,
@@ -115,7 +116,7 @@ void AddMatchOptions(CLI::App* cmd, MatchSettings* settings, bool standalone) {
       ->check(CLI::IsMember({"exhaustive", "sequential", "list"}))
       ->capture_default_str();
   cmd->add_option("--window", settings->window, "sequential: each image with the next N images")
-      ->check(CLI::PositiveNumber)
+      ->check(PositiveValue())
       ->capture_default_str();
   cmd->add_flag("--loop", settings->loop, "sequential: the last images are also paired with the first (a ring)");
   cmd->add_option("--pair_list", settings->pair_list, "list: OpenMVG pair file (lines 'I J K ...')")
@@ -130,7 +131,7 @@ void AddMatchOptions(CLI::App* cmd, MatchSettings* settings, bool standalone) {
       ->capture_default_str();
   cmd->add_flag("--no_mutual", settings->no_mutual, "Keep one-directional matches (no mutual check)");
   cmd->add_option("--flann_checks", settings->flann_checks, "FLANN: leaves visited per query")
-      ->check(CLI::PositiveNumber)
+      ->check(PositiveValue())
       ->capture_default_str();
   if (standalone) {
     cmd->add_option("--seed", settings->seed, "Seed of the kd-trees and of the verification's RANSAC")

@@ -4,6 +4,7 @@
 
 #include "software/commands.hpp"
 #include "software/commands/front_end_stages.hpp"
+#include "software/cli_checks.hpp"
 
 namespace prunesfm {
 namespace {
@@ -27,7 +28,7 @@ void AddInitCommand(CLI::App& app) {
   auto args = std::make_shared<InitArguments>();
   cmd->add_option("--image_dir,-i", args->image_dir, "Folder of images (jpg, png, tif, ...)")->required();
   cmd->add_option("--output,-o", args->output, "sfm_data.json to write (e.g. OUT/matches/sfm_data.json)")->required();
-  cmd->add_option("--num_threads", args->num_threads, "Threads (default: every core)")->check(CLI::PositiveNumber);
+  cmd->add_option("--num_threads", args->num_threads, "Threads (default: every core)")->check(PositiveValue());
   AddInitOptions(cmd, &args->settings);
   cmd->callback([args]() {
     RunInitStage(args->settings, args->image_dir, args->output, FrontEndThreads(args->num_threads));

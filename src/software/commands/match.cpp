@@ -7,6 +7,7 @@
 #include "software/cli_support.hpp"
 #include "software/commands.hpp"
 #include "software/commands/front_end_stages.hpp"
+#include "software/cli_checks.hpp"
 
 namespace prunesfm {
 namespace {
@@ -39,7 +40,7 @@ void AddMatchCommand(CLI::App& app) {
   cmd->add_option("--sfm_data,-s", args->sfm_data, "sfm_data.json from 'prunesfm init'")->required();
   cmd->add_option("--matches_dir,-m", args->matches_dir, "Folder of the .feat/.desc files; matches are written here")
       ->required();
-  cmd->add_option("--num_threads", args->num_threads, "Threads (default: every core)")->check(CLI::PositiveNumber);
+  cmd->add_option("--num_threads", args->num_threads, "Threads (default: every core)")->check(PositiveValue());
   AddMatchOptions(cmd, &args->settings, true);
   cmd->callback([args]() { RunMatch(*args); });
 }

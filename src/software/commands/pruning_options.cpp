@@ -5,6 +5,8 @@
 #include <map>
 #include <string>
 
+#include "software/cli_checks.hpp"
+
 namespace prunesfm {
 
 void AddPruningOptions(CLI::App* cmd, sfm_pruning::ViewGraphPruningOptions* options, bool final_solve) {
@@ -18,11 +20,15 @@ void AddPruningOptions(CLI::App* cmd, sfm_pruning::ViewGraphPruningOptions* opti
                     "Partition inconsistent communities again (false: one Louvain pass, ablation)")
       ->capture_default_str();
   group->add_option("--prune_max_depth", partition.max_depth, "Depth at which communities are no longer split")
-      ->check(CLI::NonNegativeNumber)
+      ->check(NonNegativeValue())
       ->capture_default_str();
   group->add_option("--prune_louvain_resolution", partition.louvain.resolution,
                     "Modularity resolution gamma of Louvain (1 = classic modularity)")
-      ->check(CLI::PositiveNumber)
+      ->check(PositiveValue())
+      ->capture_default_str();
+  group->add_option("--prune_bisect_unsplittable", partition.bisect_unsplittable,
+                    "Cut an inconsistent community that Louvain returns whole in two by spectral bisection "
+                    "instead of accepting it (not in the paper; docs/pruning.md)")
       ->capture_default_str();
   using EdgeWeight = sfm_pruning::RecursivePartitionOptions::EdgeWeight;
   group->add_option("--prune_partition_weight", partition.edge_weight,
@@ -46,7 +52,7 @@ void AddPruningOptions(CLI::App* cmd, sfm_pruning::ViewGraphPruningOptions* opti
       ->capture_default_str();
   group->add_option("--prune_loop_step_deg", consistency.loop_step_deg,
                     "A loop of l cameras may deviate by this * floor((l-1)/2) degrees")
-      ->check(CLI::PositiveNumber)
+      ->check(PositiveValue())
       ->capture_default_str();
   group->add_option("--prune_max_loop_length", consistency.cycles.max_cycle_length,
                     "Longest loop tested, in cameras (paper: fewer than 8)")
@@ -54,17 +60,17 @@ void AddPruningOptions(CLI::App* cmd, sfm_pruning::ViewGraphPruningOptions* opti
       ->capture_default_str();
   group->add_option("--prune_max_relative_rotation_error_deg", consistency.max_relative_rotation_error_deg,
                     "e_r threshold")
-      ->check(CLI::PositiveNumber)
+      ->check(PositiveValue())
       ->capture_default_str();
   group->add_option("--prune_max_relative_translation_error_deg", consistency.max_relative_translation_error_deg,
                     "e_t threshold")
-      ->check(CLI::PositiveNumber)
+      ->check(PositiveValue())
       ->capture_default_str();
 
   // Inter-subgraph RANSAC.
   group->add_option("--prune_ransac_iterations", alignment.num_iterations,
                     "RANSAC rounds per pair of subgraphs (paper ablation: 20 / 30 / 40)")
-      ->check(CLI::PositiveNumber)
+      ->check(PositiveValue())
       ->capture_default_str();
   group->add_option("--prune_ransac_enumerate_max", alignment.max_enumerated_samples,
                     "A pair whose RANSAC pool has at most this many distinct samples tries each once instead of "
@@ -105,11 +111,11 @@ void AddPruningOptions(CLI::App* cmd, sfm_pruning::ViewGraphPruningOptions* opti
       ->capture_default_str();
   group->add_option("--prune_max_rotation_deviation_deg", alignment.max_rotation_deviation_deg,
                     "E_r: rotation deviation of an edge from the RANSAC hypothesis")
-      ->check(CLI::PositiveNumber)
+      ->check(PositiveValue())
       ->capture_default_str();
   group->add_option("--prune_max_translation_deviation", alignment.max_translation_deviation_fraction,
                     "E_t: translation deviation of an edge as a fraction of |mean t|")
-      ->check(CLI::PositiveNumber)
+      ->check(PositiveValue())
       ->capture_default_str();
   group->add_option("--prune_min_edges_for_ransac", alignment.min_edges_for_ransac,
                     "Subgraph pairs with fewer voting edges keep or lose them all (few-edges policy) instead of "
@@ -122,7 +128,7 @@ void AddPruningOptions(CLI::App* cmd, sfm_pruning::ViewGraphPruningOptions* opti
       ->capture_default_str();
   group->add_option("--prune_refine_rounds", alignment.refine_rounds,
                     "Refits of a RANSAC winner on its whole consensus (0: the paper's plain RANSAC)")
-      ->check(CLI::NonNegativeNumber)
+      ->check(NonNegativeValue())
       ->capture_default_str();
 
   // The model's audit of the pruning (not in the paper; docs/pruning.md).
@@ -136,7 +142,7 @@ void AddPruningOptions(CLI::App* cmd, sfm_pruning::ViewGraphPruningOptions* opti
     group->add_option("--prune_audit_max_error_px", audit.max_transfer_error_px,
                       "Model audit: a match agrees when its landmark projects within this many pixels of the other "
                       "feature")
-        ->check(CLI::PositiveNumber)
+        ->check(PositiveValue())
         ->capture_default_str();
     group->add_option("--prune_audit_readmit_agreement", audit.readmit_agreement,
                       "Model audit: a removed edge is re-admitted when at least this share of its transferred "
@@ -157,11 +163,11 @@ void AddPruningOptions(CLI::App* cmd, sfm_pruning::ViewGraphPruningOptions* opti
       ->capture_default_str();
   group->add_option("--prune_loop_max_rotation_deg", loops.max_rotation_deg,
                     "Subgraph triangle: largest rotation of the composed frame transforms")
-      ->check(CLI::PositiveNumber)
+      ->check(PositiveValue())
       ->capture_default_str();
   group->add_option("--prune_loop_max_translation", loops.max_translation_fraction,
                     "Subgraph triangle: largest displacement, as a fraction of the triangle's mean side")
-      ->check(CLI::PositiveNumber)
+      ->check(PositiveValue())
       ->capture_default_str();
   group->add_option("--prune_loop_max_scale_ratio", loops.max_scale_ratio,
                     "Subgraph triangle: largest scale change of the composed frame transforms")
@@ -179,18 +185,18 @@ void AddPruningOptions(CLI::App* cmd, sfm_pruning::ViewGraphPruningOptions* opti
   group->add_option("--prune_min_unverified_trust", loops.min_unverified_trust,
                     "trusted_forest: a redundant subgraph pair that no cycle can verify is kept when its trust "
                     "reaches this (1: as distinctive as the edges inside the subgraphs)")
-      ->check(CLI::NonNegativeNumber)
+      ->check(NonNegativeValue())
       ->capture_default_str();
   group->add_option("--prune_min_unverified_coverage", loops.min_unverified_coverage,
                     "trusted_forest: such a pair must also reach this match coverage, relative to the edges "
                     "inside the subgraphs (when it can be measured)")
-      ->check(CLI::NonNegativeNumber)
+      ->check(NonNegativeValue())
       ->capture_default_str();
   group->add_option("--prune_unverified_max_rotation_deg", options->unverified_rotation.max_median_error_deg,
                     "trusted_forest: a pair kept unverified is cut when its edges turn by more than this (median, "
                     "degrees) against a rotation averaging of the rest of the pruned graph (0: off; catches "
                     "false loops between opposite sides of a scene)")
-      ->check(CLI::NonNegativeNumber)
+      ->check(NonNegativeValue())
       ->capture_default_str();
   group->add_option("--prune_landmark_check_deg", options->landmark_check.max_angle_deg,
                     "Each kept edge between two aligned subgraphs drops the matches whose landmark, carried into "

@@ -47,6 +47,7 @@ nlohmann::json PruningReportJson(const sfm_pruning::ViewGraphPruningReport& prun
                             {"children", node.children},
                             {"accepted_index", node.accepted_index},
                             {"seconds", node.seconds}};
+    if (node.bisected) entry["split_by"] = "spectral_bisection";
     if (node.solved) {
       entry["engine_success"] = node.engine_success;
       if (!node.engine_message.empty()) entry["engine_message"] = node.engine_message;

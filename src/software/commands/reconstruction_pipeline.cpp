@@ -23,6 +23,7 @@
 #include "software/commands/front_end_stages.hpp"
 #include "software/commands/pruning_options.hpp"
 #include "software/commands/pruning_report_json.hpp"
+#include "software/cli_checks.hpp"
 
 namespace prunesfm {
 namespace {
@@ -148,6 +149,7 @@ nlohmann::json TimingsJson(const EngineSettings& settings, const sfm_pruning::Vi
     json["prune_unverified_max_rotation_deg"] = settings.pruning.unverified_rotation.max_median_error_deg;
     json["prune_landmark_check_deg"] = settings.pruning.landmark_check.max_angle_deg;
     json["prune_ransac_enumerate_max"] = settings.pruning.alignment.max_enumerated_samples;
+    json["prune_bisect_unsplittable"] = settings.pruning.partition.bisect_unsplittable;
   }
   json["seed"] = settings.seed;
   json["num_threads"] = settings.num_threads;
@@ -250,7 +252,7 @@ void AddSolverOptions(CLI::App* cmd, EngineSettings* settings) {
       ->capture_default_str();
   cmd->add_option("--num_threads", settings->num_threads,
                   "Worker threads (1 gives bitwise reproducible results)")
-      ->check(CLI::PositiveNumber)
+      ->check(PositiveValue())
       ->capture_default_str();
   cmd->add_option("--positioning", settings->positioning,
                   "GLOMAP: global positioning of cameras and points; TRANSLATION_AVERAGING: from edge directions")
