@@ -7,7 +7,7 @@
 namespace prunesfm {
 namespace {
 
-// Empty when `input` is a whole number and `accept` holds for it, else the reason.
+// Empty when the whole of `input` parses as a number and `accept` holds for it, else the reason.
 std::string CheckNumber(const std::string& input, const std::function<bool(double)>& accept, const char* wanted) {
   char* end = nullptr;
   const double value = std::strtod(input.c_str(), &end);

@@ -334,7 +334,8 @@ void RunRansac(const std::vector<ChainedRelativePose>& chains, const std::vector
   const std::optional<Witness> witness =
       options.distinctive_witness_ratio > 0.0 ? MostDistinctiveEdge(distinctiveness) : std::nullopt;
   // No sample made a hypothesis any edge supports (e.g. every edge lands on one view), but the most
-  // distinctive edge has a scale of its own: its hypothesis decides, before the rotation alone.
+  // distinctive edge has a scale (its own or the others' median): its hypothesis decides, before the
+  // rotation alone.
   const bool witness_decides = !supported && witness.has_value();
   const Witness witness_choice = witness.value_or(Witness{});  // (value_or: GCC 12 warns on *witness below)
   const size_t witness_edge = witness_choice.edge;

@@ -3,9 +3,9 @@
 #include <CLI/CLI.hpp>
 
 #include "sfm_pruning/io/openmvg_sfm_data.hpp"
+#include "software/cli_checks.hpp"
 #include "software/commands.hpp"
 #include "software/commands/front_end_stages.hpp"
-#include "software/cli_checks.hpp"
 
 namespace prunesfm {
 namespace {

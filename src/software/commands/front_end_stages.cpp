@@ -16,8 +16,8 @@
 #include "sfm_pruning/io/openmvg_matches.hpp"
 #include "sfm_pruning/io/openmvg_sfm_data.hpp"
 #include "sfm_pruning/util/error.hpp"
-#include "software/cli_support.hpp"
 #include "software/cli_checks.hpp"
+#include "software/cli_support.hpp"
 
 namespace prunesfm {
 namespace fs = std::filesystem;

@@ -2,9 +2,9 @@
 // like OpenMVG's SfMInit_ImageListing.
 #include <CLI/CLI.hpp>
 
+#include "software/cli_checks.hpp"
 #include "software/commands.hpp"
 #include "software/commands/front_end_stages.hpp"
-#include "software/cli_checks.hpp"
 
 namespace prunesfm {
 namespace {

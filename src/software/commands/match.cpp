@@ -4,10 +4,10 @@
 
 #include "sfm_pruning/io/openmvg_features.hpp"
 #include "sfm_pruning/io/openmvg_sfm_data.hpp"
+#include "software/cli_checks.hpp"
 #include "software/cli_support.hpp"
 #include "software/commands.hpp"
 #include "software/commands/front_end_stages.hpp"
-#include "software/cli_checks.hpp"
 
 namespace prunesfm {
 namespace {

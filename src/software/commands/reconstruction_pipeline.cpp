@@ -19,11 +19,11 @@
 #include "sfm_pruning/pruning/view_graph_pruning.hpp"
 #include "sfm_pruning/report/run_view_graph.hpp"
 #include "sfm_pruning/util/error.hpp"
+#include "software/cli_checks.hpp"
 #include "software/cli_support.hpp"
 #include "software/commands/front_end_stages.hpp"
 #include "software/commands/pruning_options.hpp"
 #include "software/commands/pruning_report_json.hpp"
-#include "software/cli_checks.hpp"
 
 namespace prunesfm {
 namespace {
