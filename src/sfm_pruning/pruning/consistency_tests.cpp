@@ -78,6 +78,7 @@ const char* ConsistencyTestName(ConsistencyTest test) {
     case ConsistencyTest::kLoop: return "loop";
     case ConsistencyTest::kRelativeRotation: return "relative_rotation";
     case ConsistencyTest::kRelativeTranslation: return "relative_translation";
+    case ConsistencyTest::kBaselineRatio: return "baseline_ratio";
   }
   return "unknown";
 }
@@ -91,6 +92,23 @@ ConsistencyReport TestSubgraphConsistency(const ViewGraph& graph, const Subgraph
   }
   report.consistent = report.violations.empty();
   return report;
+}
+
+void TestBaselineRatios(const ViewGraph& graph, const SubgraphSolution& solution, const SfmData& views_and_intrinsics,
+                        const FeaturesPerView& features, const ConsistencyTestOptions& options,
+                        ConsistencyReport* report) {
+  if (!(options.max_baseline_ratio_factor > 0.0)) return;
+  for (const BaselineRatioCheck& check :
+       MeasureBaselineRatios(graph, solution, views_and_intrinsics, features, options.baseline_ratio)) {
+    if (check.Factor() <= options.max_baseline_ratio_factor) continue;
+    ConsistencyViolation violation;
+    violation.test = ConsistencyTest::kBaselineRatio;
+    violation.loop = {check.view_i, check.view_j, check.view_k};
+    violation.value_deg = check.Factor();
+    violation.threshold_deg = options.max_baseline_ratio_factor;
+    report->violations.push_back(std::move(violation));
+    report->consistent = false;
+  }
 }
 
 }  // namespace sfm_pruning

@@ -19,6 +19,7 @@
 #include <map>
 #include <vector>
 
+#include "sfm_pruning/pruning/baseline_ratio_consistency.hpp"
 #include "sfm_pruning/pruning/subgraph_solution.hpp"
 #include "sfm_pruning/view_graph/cycles.hpp"
 #include "sfm_pruning/view_graph/view_graph.hpp"
@@ -38,17 +39,23 @@ struct ConsistencyTestOptions {
   // e_t is skipped (not a violation) when |t_ij| or |t̂_ij| is below this: the direction is
   // undefined (coincident centres in the solution, or an edge without translation).
   double min_translation_norm = 1e-12;
+  // (c) baseline ratios (not in the paper; baseline_ratio_consistency.hpp): a triplet violates
+  // when its measured and implied ratios differ by more than this factor; 0 = off (default).
+  // Needs the views' features, so TestBaselineRatios runs it, not TestSubgraphConsistency.
+  double max_baseline_ratio_factor = 0.0;
+  BaselineRatioOptions baseline_ratio;
 };
 
-enum class ConsistencyTest { kLoop, kRelativeRotation, kRelativeTranslation };
+enum class ConsistencyTest { kLoop, kRelativeRotation, kRelativeTranslation, kBaselineRatio };
 
-// "loop", "relative_rotation", "relative_translation".
+// "loop", "relative_rotation", "relative_translation", "baseline_ratio".
 const char* ConsistencyTestName(ConsistencyTest test);
 
 struct ConsistencyViolation {
   ConsistencyTest test = ConsistencyTest::kLoop;
   ViewPair edge{kUndefinedIndex, kUndefinedIndex};  // kRelative*: the edge
-  ViewCycle loop;                                   // kLoop: the loop (canonical form)
+  ViewCycle loop;  // kLoop: the loop (canonical form); kBaselineRatio: (i, j, k), i the shared view
+  // Degrees; for kBaselineRatio the factor between the measured and the implied ratio (>= 1).
   double value_deg = 0.0;
   double threshold_deg = 0.0;
 };
@@ -69,6 +76,12 @@ struct ConsistencyReport {
   // Valid edges with an endpoint that the solution does not pose: not tested.
   size_t num_unposed_edges = 0;
 };
+
+// Tests (c) when options.max_baseline_ratio_factor > 0: appends its violations to `report` (and
+// marks it inconsistent on any); `views_and_intrinsics` and `features` give the bearings.
+void TestBaselineRatios(const ViewGraph& graph, const SubgraphSolution& solution, const SfmData& views_and_intrinsics,
+                        const FeaturesPerView& features, const ConsistencyTestOptions& options,
+                        ConsistencyReport* report);
 
 // Tests `solution` against the valid edges of `graph` (the subgraph's induced view graph).
 ConsistencyReport TestSubgraphConsistency(const ViewGraph& graph, const SubgraphSolution& solution,

@@ -177,6 +177,8 @@ class Partitioner {
       node.consistency.consistent = false;
     } else {
       node.consistency = TestSubgraphConsistency(induced, solution, options_.consistency);
+      TestBaselineRatios(induced, solution, views_and_intrinsics_, features_, options_.consistency,
+                         &node.consistency);
     }
     node.seconds += SecondsSince(start);
   }

@@ -50,6 +50,12 @@ void AddPruningOptions(CLI::App* cmd, sfm_pruning::ViewGraphPruningOptions* opti
   group->add_option("--prune_relative_translation_test", consistency.test_relative_translation,
                     "Translation direction test (e_t) on/off")
       ->capture_default_str();
+  group->add_option("--prune_baseline_ratio_factor", consistency.max_baseline_ratio_factor,
+                    "Baseline-ratio test (not in the paper): two edges of a view that triangulate the same "
+                    "features measure the ratio of their baselines; a community fails when its solution's ratio "
+                    "differs by more than this factor (0: off; docs/pruning.md)")
+      ->check(NonNegativeValue())
+      ->capture_default_str();
   group->add_option("--prune_loop_step_deg", consistency.loop_step_deg,
                     "A loop of l cameras may deviate by this * floor((l-1)/2) degrees")
       ->check(PositiveValue())

@@ -18,7 +18,13 @@ nlohmann::json ViolationsJson(const std::vector<sfm_pruning::ConsistencyViolatio
     nlohmann::json entry = {{"test", sfm_pruning::ConsistencyTestName(v.test)},
                             {"value_deg", v.value_deg},
                             {"threshold_deg", v.threshold_deg}};
-    if (v.test == ConsistencyTest::kLoop) {
+    if (v.test == ConsistencyTest::kBaselineRatio) {
+      // A factor, not an angle: (i, j, k) with i the view both edges share.
+      entry = {{"test", sfm_pruning::ConsistencyTestName(v.test)},
+               {"views", v.loop},
+               {"factor", v.value_deg},
+               {"threshold_factor", v.threshold_deg}};
+    } else if (v.test == ConsistencyTest::kLoop) {
       entry["loop"] = v.loop;
     } else {
       entry["edge"] = ViewPairJson(v.edge);

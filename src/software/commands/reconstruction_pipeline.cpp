@@ -150,6 +150,7 @@ nlohmann::json TimingsJson(const EngineSettings& settings, const sfm_pruning::Vi
     json["prune_landmark_check_deg"] = settings.pruning.landmark_check.max_angle_deg;
     json["prune_ransac_enumerate_max"] = settings.pruning.alignment.max_enumerated_samples;
     json["prune_bisect_unsplittable"] = settings.pruning.partition.bisect_unsplittable;
+    json["prune_baseline_ratio_factor"] = settings.pruning.partition.consistency.max_baseline_ratio_factor;
   }
   json["seed"] = settings.seed;
   json["num_threads"] = settings.num_threads;
