@@ -141,6 +141,36 @@ TEST(CliPruneEndToEnd, ReportListsEachViolationOfAnInconsistentCommunity) {
   EXPECT_GT(listed, 0u);
 }
 
+TEST(CliPruneEndToEnd, ReportListsBaselineRatioViolationsAsFactorsOverThreeViews) {
+  // A factor of 1.01 is below the depths' noise, so some community fails the test.
+  const fs::path scratch = ScratchDir("cli_prune_baseline_ratio");
+  const CommandResult result =
+      RunPrunesfm({"prune", "--database", (OrbitProject() / "verified.db").string(), "--output",
+                   (scratch / "pruned.db").string(), "--prune_baseline_ratio_factor", "1.01"});
+  ASSERT_EQ(result.exit_code, 0) << result.err;
+  const nlohmann::json report = nlohmann::json::parse(std::ifstream(scratch / "pruned.pruning_report.json"));
+  size_t listed = 0;
+  for (const nlohmann::json& node : report.at("tree")) {
+    if (!node.contains("violation_list")) continue;
+    size_t counted = 0;
+    for (const nlohmann::json& v : node.at("violation_list")) {
+      if (v.at("test") != "baseline_ratio") continue;
+      ++counted;
+      EXPECT_GT(v.at("factor").get<double>(), 1.01) << v.dump();
+      EXPECT_DOUBLE_EQ(v.at("threshold_factor").get<double>(), 1.01);
+      const std::set<IndexT> views(node.at("view_ids").begin(), node.at("view_ids").end());
+      ASSERT_EQ(v.at("views").size(), 3u) << v.dump();
+      for (const nlohmann::json& view : v.at("views")) EXPECT_EQ(views.count(view.get<IndexT>()), 1u) << v.dump();
+    }
+    EXPECT_EQ(node.at("violations").at("baseline_ratio").get<size_t>(), counted) << node.dump();
+    if (counted > 0) {
+      EXPECT_FALSE(node.at("consistent").get<bool>());
+    }
+    listed += counted;
+  }
+  EXPECT_GT(listed, 0u);
+}
+
 TEST(CliPruneEndToEnd, OpenMvgMatchFileLosesExactlyTheRemovedPairs) {
   const fs::path scratch = ScratchDir("cli_prune_openmvg");
   const fs::path output = scratch / "matches.pruned.txt";

@@ -1,6 +1,8 @@
 #include "software/commands/pruning_report_json.hpp"
 
 #include <cstdio>
+#include <map>
+#include <string>
 #include <vector>
 
 #include "sfm_pruning/util/atomic_file.hpp"
@@ -61,10 +63,15 @@ nlohmann::json PruningReportJson(const sfm_pruning::ViewGraphPruningReport& prun
       entry["landmarks"] = node.num_landmarks;
     }
     if (node.consistency_tested) {
-      size_t counts[3] = {0, 0, 0};
-      for (const ConsistencyViolation& v : node.consistency.violations) ++counts[static_cast<int>(v.test)];
+      // Every test's count, zeros included (baseline_ratio is 0 when the test is off).
+      std::map<std::string, size_t> counts;
+      for (const ConsistencyTest test : {ConsistencyTest::kLoop, ConsistencyTest::kRelativeRotation,
+                                         ConsistencyTest::kRelativeTranslation, ConsistencyTest::kBaselineRatio}) {
+        counts[ConsistencyTestName(test)] = 0;
+      }
+      for (const ConsistencyViolation& v : node.consistency.violations) ++counts[ConsistencyTestName(v.test)];
       entry["consistent"] = node.consistency.consistent;
-      entry["violations"] = {{"loop", counts[0]}, {"relative_rotation", counts[1]}, {"relative_translation", counts[2]}};
+      entry["violations"] = std::move(counts);
       entry["violation_list"] = ViolationsJson(node.consistency.violations);
       entry["loop_error"] = summary(node.consistency.loop_error);
       entry["relative_rotation_error"] = summary(node.consistency.relative_rotation_error);
