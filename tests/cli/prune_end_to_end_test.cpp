@@ -9,6 +9,8 @@
 #include <fstream>
 #include <iterator>
 #include <set>
+#include <string>
+#include <vector>
 
 #include <nlohmann/json.hpp>
 
@@ -115,14 +117,23 @@ TEST(CliPruneEndToEnd, DatabaseLosesExactlyTheRemovedPairsAndRunsAreReproducible
       << ")";
 }
 
+// `prunesfm prune` of the orbit project's verified database with `extra_args`; its pruning report
+// (empty, with a test failure, when the command fails).
+nlohmann::json PruneOrbitReport(const std::string& scratch_name, const std::vector<std::string>& extra_args) {
+  const fs::path scratch = ScratchDir(scratch_name);
+  std::vector<std::string> args = {"prune", "--database", (OrbitProject() / "verified.db").string(), "--output",
+                                   (scratch / "pruned.db").string()};
+  args.insert(args.end(), extra_args.begin(), extra_args.end());
+  const CommandResult result = RunPrunesfm(args);
+  EXPECT_EQ(result.exit_code, 0) << result.err;
+  if (result.exit_code != 0) return nlohmann::json::object({{"tree", nlohmann::json::array()}});
+  return nlohmann::json::parse(std::ifstream(scratch / "pruned.pruning_report.json"));
+}
+
 TEST(CliPruneEndToEnd, ReportListsEachViolationOfAnInconsistentCommunity) {
   // Weighted by raw inliers, Louvain groups views of the twin faces, and that community fails.
-  const fs::path scratch = ScratchDir("cli_prune_violations");
-  const CommandResult result =
-      RunPrunesfm({"prune", "--database", (OrbitProject() / "verified.db").string(), "--output",
-                   (scratch / "pruned.db").string(), "--seed", "5", "--prune_partition_weight", "inliers"});
-  ASSERT_EQ(result.exit_code, 0) << result.err;
-  const nlohmann::json report = nlohmann::json::parse(std::ifstream(scratch / "pruned.pruning_report.json"));
+  const nlohmann::json report =
+      PruneOrbitReport("cli_prune_violations", {"--seed", "5", "--prune_partition_weight", "inliers"});
   size_t listed = 0;
   for (const nlohmann::json& node : report.at("tree")) {
     if (!node.contains("violation_list")) continue;
@@ -143,12 +154,7 @@ TEST(CliPruneEndToEnd, ReportListsEachViolationOfAnInconsistentCommunity) {
 
 TEST(CliPruneEndToEnd, ReportListsBaselineRatioViolationsAsFactorsOverThreeViews) {
   // A factor of 1.01 is below the depths' noise, so some community fails the test.
-  const fs::path scratch = ScratchDir("cli_prune_baseline_ratio");
-  const CommandResult result =
-      RunPrunesfm({"prune", "--database", (OrbitProject() / "verified.db").string(), "--output",
-                   (scratch / "pruned.db").string(), "--prune_baseline_ratio_factor", "1.01"});
-  ASSERT_EQ(result.exit_code, 0) << result.err;
-  const nlohmann::json report = nlohmann::json::parse(std::ifstream(scratch / "pruned.pruning_report.json"));
+  const nlohmann::json report = PruneOrbitReport("cli_prune_baseline_ratio", {"--prune_baseline_ratio_factor", "1.01"});
   size_t listed = 0;
   for (const nlohmann::json& node : report.at("tree")) {
     if (!node.contains("violation_list")) continue;

@@ -1,7 +1,5 @@
 #include "sfm_pruning/pruning/pair_trust.hpp"
 
-#include <cstdlib>
-
 #include "sfm_pruning/view_graph/distinctive_weights.hpp"
 
 namespace sfm_pruning {
@@ -84,13 +82,7 @@ double PairTrust::Of(const SubgraphAlignmentResult& alignment, bool all_edges) c
     if (alignment.selected_hypothesis < 0) return 0.0;
     return alignment.hypotheses[static_cast<size_t>(alignment.selected_hypothesis)].Coverage();
   }
-  const std::vector<ViewPair> edges = EdgesOf(alignment, all_edges);
-  double share = Share(edges);
-  if (const char* m_env = std::getenv("PRUNESFM_TRUST_M"); m_env != nullptr && !all_edges) {
-    const double m = std::atof(m_env);
-    const double k = static_cast<double>(edges.size());
-    share = (k * share + m * Share(EdgesOf(alignment, true))) / (k + m);
-  }
+  const double share = Share(EdgesOf(alignment, all_edges));
   return reference_share_ > 0.0 ? share / reference_share_ : share;
 }
 
