@@ -1,12 +1,12 @@
 #include "sfm_pruning/pruning/baseline_ratio_consistency.hpp"
 
 #include <algorithm>
-#include <cmath>
 #include <map>
 #include <optional>
 #include <utility>
 
 #include "sfm_pruning/geometry/triangulation.hpp"
+#include "sfm_pruning/sfm/pose.hpp"
 #include "sfm_pruning/util/statistics.hpp"
 
 namespace sfm_pruning {
@@ -54,7 +54,7 @@ std::vector<BaselineRatioCheck> MeasureBaselineRatios(const ViewGraph& graph, co
                                                       const SfmData& views_and_intrinsics,
                                                       const FeaturesPerView& features,
                                                       const BaselineRatioOptions& options) {
-  const double min_parallax_rad = options.min_parallax_deg * M_PI / 180.0;
+  const double min_parallax_rad = DegToRad(options.min_parallax_deg);
   std::vector<BaselineRatioCheck> checks;
   for (const auto& [view_i, neighbours] : graph.ValidAdjacency()) {
     const auto pose_i = solution.poses.find(view_i);
