@@ -14,6 +14,7 @@ For every scene and every seed in --seeds, `prunesfm run --engine GLOBAL_PRUNED 
 and the street configuration of docs/pruning.md). Python 3 standard library only.
 """
 
+import concurrent.futures
 import json
 import re
 import shlex
@@ -70,6 +71,8 @@ def main():
     parser.add_argument("--target", type=float, help="AUC counted as a success (default: 90 real, 95 synthetic)")
     parser.add_argument("--fragment", help="section name to write (default: seed_sweep, or seed_sweep_synthetic "
                                            "with --synthetic); another name keeps those sections and adds one")
+    parser.add_argument("--jobs", type=int, default=1,
+                        help="seeds run at once (each with --threads threads); the results do not depend on it")
     parser.add_argument("--title", help="section title (default: by the kind of scenes)")
     args = parser.parse_args()
     prunesfm = str(Path(args.prunesfm).resolve()) if args.prunesfm else str(rb.find_prunesfm(None))
@@ -92,29 +95,33 @@ def main():
               f"{scored}; success = AUC@{auc_key} ≥ {target:g}.", "",
               f"| scene | pruning | AUC@{auc_key} per seed | successes |", "|---|---|---|---|"]
     base = Path(args.work) / "synthetic" if synthetic else Path(args.work)
+
+    def run_seed(scene, database, images, reference, label, extra, seed):
+        """AUC of one GLOBAL_PRUNED run; each run has its own folder, so runs may go in parallel."""
+        out = base / scene / f"{re.sub(r'[^A-Za-z0-9]+', '_', label).strip('_')}_{seed}"
+        out.mkdir(parents=True, exist_ok=True)
+        db = out / "database.db"
+        rb.copy_database(database, db)
+        argv = [prunesfm, "run", "--database", db, "--image_path", images, "--output_path", out / "result",
+                "--engine", "GLOBAL_PRUNED", "--seed", seed, "--num_threads", args.threads, *shlex.split(extra)]
+        stage = rb.run_stage("run", argv, out / "run.log", args.timeout)
+        model = out / "result" / "sparse" / "0" if stage["rc"] == 0 else None
+        auc = bs.evaluate_against(prunesfm, model, reference, out, str(args.seed), args.timeout)["auc"][auc_key]
+        print(f"{scene} {label} seed {seed}: AUC@{auc_key} {auc:.1f}", flush=True)
+        return auc
+
     results = {}
-    for scene in synthetic or [s for s in args.scenes.split(",") if s]:
-        database, images, reference = (synthetic_scene(args, prunesfm, scene) if synthetic
-                                       else real_scene(args, scene))
-        for label, extra in variants:
-            aucs = []
-            for seed in seeds:
-                out = base / scene / f"{re.sub(r'[^A-Za-z0-9]+', '_', label).strip('_')}_{seed}"
-                out.mkdir(parents=True, exist_ok=True)
-                db = out / "database.db"
-                rb.copy_database(database, db)
-                argv = [prunesfm, "run", "--database", db, "--image_path", images, "--output_path", out / "result",
-                        "--engine", "GLOBAL_PRUNED", "--seed", seed, "--num_threads", args.threads,
-                        *shlex.split(extra)]
-                stage = rb.run_stage("run", argv, out / "run.log", args.timeout)
-                model = out / "result" / "sparse" / "0" if stage["rc"] == 0 else None
-                result = bs.evaluate_against(prunesfm, model, reference, out, str(args.seed), args.timeout)
-                aucs.append(result["auc"][auc_key])
-                print(f"{scene} {label} seed {seed}: AUC@{auc_key} {aucs[-1]:.1f}", flush=True)
-            successes = sum(a >= target for a in aucs)
-            results.setdefault(scene, {})[label] = aucs
-            lines.append(f"| {scene} | {label}{(' `' + extra + '`') if extra else ''} | "
-                         f"{', '.join(f'{a:.1f}' for a in aucs)} | {successes} of {len(aucs)} |")
+    with concurrent.futures.ThreadPoolExecutor(max_workers=max(1, args.jobs)) as pool:
+        for scene in synthetic or [s for s in args.scenes.split(",") if s]:
+            database, images, reference = (synthetic_scene(args, prunesfm, scene) if synthetic
+                                           else real_scene(args, scene))
+            for label, extra in variants:
+                aucs = list(pool.map(lambda seed: run_seed(scene, database, images, reference, label, extra, seed),
+                                     seeds))
+                successes = sum(a >= target for a in aucs)
+                results.setdefault(scene, {})[label] = aucs
+                lines.append(f"| {scene} | {label}{(' `' + extra + '`') if extra else ''} | "
+                             f"{', '.join(f'{a:.1f}' for a in aucs)} | {successes} of {len(aucs)} |")
     (base / "results.json").write_text(json.dumps(results, indent=2) + "\n")
     bs.write_fragment(args.fragment or ("seed_sweep_synthetic" if synthetic else "seed_sweep"), lines)
     return 0

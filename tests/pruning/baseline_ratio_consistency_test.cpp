@@ -59,11 +59,11 @@ TEST(BaselineRatios, ACameraMovedAlongItsBaselineFailsEveryTripletThroughIt) {
     ASSERT_EQ(violation.loop.size(), 3u);
     const bool through_3 = violation.loop[0] == 3 || violation.loop[1] == 3 || violation.loop[2] == 3;
     EXPECT_TRUE(through_3);
-    EXPECT_GT(violation.value_deg, 1.25);
-    EXPECT_DOUBLE_EQ(violation.threshold_deg, 1.25);
+    EXPECT_GT(violation.value, 1.25);
+    EXPECT_DOUBLE_EQ(violation.threshold, 1.25);
     if (violation.loop[0] == 0) {
       found_at_view_0 = true;
-      EXPECT_NEAR(violation.value_deg, 1.0 / 0.6, 1e-6);  // 0: (1, 3) and (2, 3)
+      EXPECT_NEAR(violation.value, 1.0 / 0.6, 1e-6);  // 0: (1, 3) and (2, 3)
     }
   }
   EXPECT_TRUE(found_at_view_0);

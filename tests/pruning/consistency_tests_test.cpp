@@ -60,8 +60,8 @@ TEST(SubgraphConsistency, TwelveDegreeRotationErrorIsFlaggedOnItsEdge) {
   const ConsistencyViolation& violation = report.violations.front();
   EXPECT_EQ(violation.test, ConsistencyTest::kRelativeRotation);
   EXPECT_EQ(violation.edge, ViewPair(1, 3));
-  EXPECT_NEAR(violation.value_deg, 12.0, 1e-6);
-  EXPECT_DOUBLE_EQ(violation.threshold_deg, 10.0);
+  EXPECT_NEAR(violation.value, 12.0, 1e-6);
+  EXPECT_DOUBLE_EQ(violation.threshold, 10.0);
   EXPECT_NEAR(report.relative_rotation_error.max_deg, 12.0, 1e-6);
 }
 
@@ -73,7 +73,7 @@ TEST(SubgraphConsistency, FlippedTranslationIsFlaggedOnItsEdge) {
   ASSERT_EQ(report.violations.size(), 1u);  // rotations, hence loops, are untouched
   EXPECT_EQ(report.violations[0].test, ConsistencyTest::kRelativeTranslation);
   EXPECT_EQ(report.violations[0].edge, ViewPair(2, 4));
-  EXPECT_NEAR(report.violations[0].value_deg, 180.0, 1e-6);
+  EXPECT_NEAR(report.violations[0].value, 180.0, 1e-6);
 }
 
 TEST(SubgraphConsistency, LoopErrorBelowTheEdgeThresholdFailsTheLoopTest) {
@@ -85,8 +85,8 @@ TEST(SubgraphConsistency, LoopErrorBelowTheEdgeThresholdFailsTheLoopTest) {
   ASSERT_GT(CountViolations(report, ConsistencyTest::kLoop), 0u);
   for (const auto& violation : report.violations) {
     ASSERT_EQ(violation.test, ConsistencyTest::kLoop);
-    EXPECT_NEAR(violation.value_deg, 7.0, 1e-6);
-    EXPECT_DOUBLE_EQ(violation.threshold_deg, LoopRotationThresholdDeg(violation.loop.size()));
+    EXPECT_NEAR(violation.value, 7.0, 1e-6);
+    EXPECT_DOUBLE_EQ(violation.threshold, LoopRotationThresholdDeg(violation.loop.size()));
     const bool has_0 = std::count(violation.loop.begin(), violation.loop.end(), 0u) == 1;
     const bool has_5 = std::count(violation.loop.begin(), violation.loop.end(), 5u) == 1;
     EXPECT_TRUE(has_0 && has_5);

@@ -71,6 +71,26 @@ TEST(PairTrust, DistinctiveShareIsMeasuredAgainstTheEdgesInsideTheSubgraphs) {
   EXPECT_DOUBLE_EQ(trust.Of(TwoSubgraphs::Kept({}), false), 0.0);
 }
 
+TEST(PairTrust, PriorEdgesPullOneKeptEdgeTowardTheShareOfAllConnectingEdges) {
+  const TwoSubgraphs scene;
+  const double prior_edges = 2.0;
+  const PairTrust trust(PairTrustMeasure::kDistinctiveShare, scene.graph, scene.accepted, scene.no_views, {},
+                        prior_edges);
+  const double inside = (10.0 / 3.0 + 7.5 + 10.0 / 3.0) / 30.0;
+  // 0-3 alone: (10/3 + 7.5) / 20. All four connecting edges: the facade's 4 · 10/3 plus 0-3's
+  // unique 7.5 over 50 inliers. One kept edge weighs as one against the prior's two.
+  const double kept_share = (10.0 / 3.0 + 7.5) / 20.0;
+  const double all_share = (4.0 * 10.0 / 3.0 + 7.5) / 50.0;
+  const SubgraphAlignmentResult one_kept = TwoSubgraphs::Kept({{0, 3}}, {{0, 2}, {1, 2}, {1, 3}});
+  EXPECT_DOUBLE_EQ(trust.Of(one_kept, false), ((kept_share + prior_edges * all_share) / 3.0) / inside);
+  EXPECT_LT(trust.Of(one_kept, false), kept_share / inside);
+  // Every edge kept: the prior changes nothing; all edges asked for: no prior; nothing kept: 0.
+  const SubgraphAlignmentResult all_kept = TwoSubgraphs::Kept({{0, 2}, {0, 3}, {1, 2}, {1, 3}});
+  EXPECT_NEAR(trust.Of(all_kept, false), all_share / inside, 1e-12);
+  EXPECT_DOUBLE_EQ(trust.Of(one_kept, true), all_share / inside);
+  EXPECT_DOUBLE_EQ(trust.Of(TwoSubgraphs::Kept({}, {{0, 3}}), false), 0.0);
+}
+
 TEST(PairTrust, MatchCoverageIsTheSelectedHypothesis) {
   const TwoSubgraphs scene;
   const PairTrust trust(PairTrustMeasure::kMatchCoverage, scene.graph, scene.accepted, scene.no_views, {});

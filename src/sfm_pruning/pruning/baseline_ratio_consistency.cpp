@@ -4,6 +4,7 @@
 #include <map>
 #include <optional>
 #include <utility>
+#include <vector>
 
 #include "sfm_pruning/geometry/triangulation.hpp"
 #include "sfm_pruning/sfm/pose.hpp"
@@ -59,36 +60,42 @@ std::vector<BaselineRatioCheck> MeasureBaselineRatios(const ViewGraph& graph, co
   for (const auto& [view_i, neighbours] : graph.ValidAdjacency()) {
     const auto pose_i = solution.poses.find(view_i);
     if (pose_i == solution.poses.end()) continue;
-    // Each posed neighbour with its distances and its solved distance from i.
-    std::vector<std::pair<IndexT, DistanceByFeature>> measured;
-    std::vector<double> solved_baselines;
+    // Each posed neighbour away from i's centre (a zero solved baseline implies no ratio), with its
+    // measured distances.
+    struct Neighbour {
+      IndexT view;
+      DistanceByFeature distances;
+      double solved_baseline;
+    };
+    std::vector<Neighbour> measured;
     for (const IndexT view_j : neighbours) {
       const auto pose_j = solution.poses.find(view_j);
       if (pose_j == solution.poses.end()) continue;
+      const double solved_baseline = (pose_j->second.center - pose_i->second.center).norm();
+      if (!(solved_baseline > 0.0)) continue;
       std::optional<DistanceByFeature> distances =
           UnitBaselineDistances(graph, view_i, view_j, views_and_intrinsics, features, min_parallax_rad);
       if (!distances || distances->size() < options.min_common_points) continue;
-      measured.emplace_back(view_j, std::move(*distances));
-      solved_baselines.push_back((pose_j->second.center - pose_i->second.center).norm());
+      measured.push_back({view_j, std::move(*distances), solved_baseline});
     }
     for (size_t a = 0; a < measured.size(); ++a) {
       for (size_t b = a + 1; b < measured.size(); ++b) {
         // d_ij / d_ik = |c_i - c_k| / |c_i - c_j| for every feature both edges triangulate.
         std::vector<double> ratios;
-        for (const auto& [feature, distance_ij] : measured[a].second) {
-          const auto distance_ik = measured[b].second.find(feature);
-          if (distance_ik != measured[b].second.end() && distance_ik->second > 0.0) {
+        for (const auto& [feature, distance_ij] : measured[a].distances) {
+          const auto distance_ik = measured[b].distances.find(feature);
+          if (distance_ik != measured[b].distances.end() && distance_ik->second > 0.0) {
             ratios.push_back(distance_ij / distance_ik->second);
           }
         }
-        if (ratios.size() < options.min_common_points || !(solved_baselines[a] > 0.0)) continue;
+        if (ratios.size() < options.min_common_points) continue;
         BaselineRatioCheck check;
         check.view_i = view_i;
-        check.view_j = measured[a].first;
-        check.view_k = measured[b].first;
+        check.view_j = measured[a].view;
+        check.view_k = measured[b].view;
         check.num_common_points = ratios.size();
         check.measured_ratio = Median(std::move(ratios));
-        check.implied_ratio = solved_baselines[b] / solved_baselines[a];
+        check.implied_ratio = measured[b].solved_baseline / measured[a].solved_baseline;
         checks.push_back(check);
       }
     }

@@ -28,8 +28,8 @@ void TestLoops(const ViewGraph& graph, const ConsistencyTestOptions& options, Co
       ConsistencyViolation violation;
       violation.test = ConsistencyTest::kLoop;
       violation.loop = cycle;
-      violation.value_deg = error_deg;
-      violation.threshold_deg = threshold_deg;
+      violation.value = error_deg;
+      violation.threshold = threshold_deg;
       report->violations.push_back(std::move(violation));
     }
   }
@@ -104,8 +104,8 @@ void TestBaselineRatios(const ViewGraph& graph, const SubgraphSolution& solution
     ConsistencyViolation violation;
     violation.test = ConsistencyTest::kBaselineRatio;
     violation.loop = {check.view_i, check.view_j, check.view_k};
-    violation.value_deg = check.Factor();
-    violation.threshold_deg = options.max_baseline_ratio_factor;
+    violation.value = check.Factor();
+    violation.threshold = options.max_baseline_ratio_factor;
     report->violations.push_back(std::move(violation));
     report->consistent = false;
   }

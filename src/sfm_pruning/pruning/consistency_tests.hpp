@@ -55,9 +55,10 @@ struct ConsistencyViolation {
   ConsistencyTest test = ConsistencyTest::kLoop;
   ViewPair edge{kUndefinedIndex, kUndefinedIndex};  // kRelative*: the edge
   ViewCycle loop;  // kLoop: the loop (canonical form); kBaselineRatio: (i, j, k), i the shared view
-  // Degrees; for kBaselineRatio the factor between the measured and the implied ratio (>= 1).
-  double value_deg = 0.0;
-  double threshold_deg = 0.0;
+  // Degrees for the direction tests; for kBaselineRatio the factor between the measured and the
+  // implied ratio (>= 1), so the report names the units per test.
+  double value = 0.0;
+  double threshold = 0.0;
 };
 
 struct ErrorSummary {

@@ -40,8 +40,8 @@ std::vector<ViewPair> EdgesOf(const SubgraphAlignmentResult& alignment, bool all
 }  // namespace
 
 PairTrust::PairTrust(PairTrustMeasure measure, const ViewGraph& graph, const std::vector<AcceptedSubgraph>& accepted,
-                     const SfmData& views_and_intrinsics, const EdgePlacementOptions& placement)
-    : measure_(measure), graph_(graph) {
+                     const SfmData& views_and_intrinsics, const EdgePlacementOptions& placement, double prior_edges)
+    : measure_(measure), prior_edges_(prior_edges), graph_(graph) {
   reference_coverage_ = InsideMatchCoverage(graph, accepted, views_and_intrinsics, placement);
   edge_weights_ = DistinctiveMatchWeights(graph, FeatureDistinctiveness(graph));
   if (measure_ == PairTrustMeasure::kMatchCoverage) return;
@@ -82,7 +82,13 @@ double PairTrust::Of(const SubgraphAlignmentResult& alignment, bool all_edges) c
     if (alignment.selected_hypothesis < 0) return 0.0;
     return alignment.hypotheses[static_cast<size_t>(alignment.selected_hypothesis)].Coverage();
   }
-  const double share = Share(EdgesOf(alignment, all_edges));
+  const std::vector<ViewPair> edges = EdgesOf(alignment, all_edges);
+  double share = Share(edges);
+  // A pair that kept nothing stays at 0: the prior only tempers the share of edges that were kept.
+  if (prior_edges_ > 0.0 && !all_edges && !edges.empty()) {
+    const double kept = static_cast<double>(edges.size());
+    share = (kept * share + prior_edges_ * Share(EdgesOf(alignment, true))) / (kept + prior_edges_);
+  }
   return reference_share_ > 0.0 ? share / reference_share_ : share;
 }
 

@@ -26,8 +26,9 @@ class PairTrust {
  public:
   // `graph`: the graph the subgraphs were partitioned from (feature match counts are taken on it);
   // `views_and_intrinsics` and `placement`: as for AlignSubgraphPair (the reference coverage).
+  // `prior_edges`: ViewGraphPruningOptions::trust_prior_edges (kDistinctiveShare only).
   PairTrust(PairTrustMeasure measure, const ViewGraph& graph, const std::vector<AcceptedSubgraph>& accepted,
-            const SfmData& views_and_intrinsics, const EdgePlacementOptions& placement);
+            const SfmData& views_and_intrinsics, const EdgePlacementOptions& placement, double prior_edges = 0.0);
 
   // The trust of an aligned pair's kept edges, or of all its connecting edges (`all_edges`: a pair
   // without a transform keeps all of them if it is kept at all).
@@ -50,6 +51,7 @@ class PairTrust {
   double Share(const std::vector<ViewPair>& edges) const;
 
   PairTrustMeasure measure_;
+  double prior_edges_ = 0.0;
   const ViewGraph& graph_;
   std::map<ViewPair, double> edge_weights_;  // DistinctiveMatchWeights
   double reference_share_ = 0.0;

@@ -258,7 +258,7 @@ void PruneViewGraph(const ViewGraphPruningOptions& options, ViewGraph* graph, co
   const std::vector<std::pair<int, int>> pairs = ConnectedSubgraphPairs(*graph, accepted);
   // Built before the alignment: its distinctive weights serve the alignment's witness too.
   const PairTrust pair_trust(options.link_trust, component_graph, accepted, views_and_intrinsics,
-                             options.alignment.placement);
+                             options.alignment.placement, options.trust_prior_edges);
   const std::map<ViewPair, double>* distinctive_weights =
       options.alignment.distinctive_witness_ratio > 0.0 ? &pair_trust.EdgeWeights() : nullptr;
   std::vector<SubgraphAlignmentResult> alignments(pairs.size());

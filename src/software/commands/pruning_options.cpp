@@ -222,6 +222,12 @@ void AddPruningOptions(CLI::App* cmd, sfm_pruning::ViewGraphPruningOptions* opti
                                            {"distinctive", LinkTrust::kDistinctiveShare}},
           CLI::ignore_case))
       ->default_str("distinctive");
+  group->add_option("--prune_trust_prior_edges", options->trust_prior_edges,
+                    "distinctive trust: a pair whose RANSAC kept k edges is ranked by (k * their share + m * "
+                    "the share of all its connecting edges) / (k + m), so one kept edge cannot outrank a large "
+                    "consensus (0: off; docs/pruning.md)")
+      ->check(NonNegativeValue())
+      ->capture_default_str();
   group->add_option("--prune_loop_max_cycle_length", loops.max_cycle_length,
                     "Longest cycle of subgraphs the second loop pass judges (below 4: off); on a broken "
                     "cycle the pair of lowest match coverage is cut")

@@ -17,19 +17,20 @@ nlohmann::json ViolationsJson(const std::vector<sfm_pruning::ConsistencyViolatio
   using sfm_pruning::ConsistencyTest;
   nlohmann::json list = nlohmann::json::array();
   for (const sfm_pruning::ConsistencyViolation& v : violations) {
-    nlohmann::json entry = {{"test", sfm_pruning::ConsistencyTestName(v.test)},
-                            {"value_deg", v.value_deg},
-                            {"threshold_deg", v.threshold_deg}};
+    nlohmann::json entry = {{"test", sfm_pruning::ConsistencyTestName(v.test)}};
     if (v.test == ConsistencyTest::kBaselineRatio) {
       // A factor, not an angle: (i, j, k) with i the view both edges share.
-      entry = {{"test", sfm_pruning::ConsistencyTestName(v.test)},
-               {"views", v.loop},
-               {"factor", v.value_deg},
-               {"threshold_factor", v.threshold_deg}};
-    } else if (v.test == ConsistencyTest::kLoop) {
-      entry["loop"] = v.loop;
+      entry["views"] = v.loop;
+      entry["factor"] = v.value;
+      entry["threshold_factor"] = v.threshold;
     } else {
-      entry["edge"] = ViewPairJson(v.edge);
+      entry["value_deg"] = v.value;
+      entry["threshold_deg"] = v.threshold;
+      if (v.test == ConsistencyTest::kLoop) {
+        entry["loop"] = v.loop;
+      } else {
+        entry["edge"] = ViewPairJson(v.edge);
+      }
     }
     list.push_back(std::move(entry));
   }

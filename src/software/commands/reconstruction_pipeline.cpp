@@ -151,6 +151,7 @@ nlohmann::json TimingsJson(const EngineSettings& settings, const sfm_pruning::Vi
     json["prune_ransac_enumerate_max"] = settings.pruning.alignment.max_enumerated_samples;
     json["prune_bisect_unsplittable"] = settings.pruning.partition.bisect_unsplittable;
     json["prune_baseline_ratio_factor"] = settings.pruning.partition.consistency.max_baseline_ratio_factor;
+    json["prune_trust_prior_edges"] = settings.pruning.trust_prior_edges;
   }
   json["seed"] = settings.seed;
   json["num_threads"] = settings.num_threads;
