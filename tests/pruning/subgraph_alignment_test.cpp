@@ -223,6 +223,31 @@ TEST(SubgraphAlignment, BelowTheBreakEvenTheCandidatesAreComparedWithEachOther) 
   EXPECT_EQ(largest.KeptEdges(), OutnumberedTrueEdges::Sorted(pair.twin_edges));
 }
 
+TEST(SubgraphAlignment, ASelectionIsContestedByARivalTheCoverageDoesNotTellApart) {
+  const auto candidate = [](size_t consensus, double coverage_score) {
+    AlignmentHypothesis hypothesis;
+    hypothesis.consensus_size = consensus;
+    hypothesis.coverage_score = coverage_score;
+    return hypothesis;
+  };
+  SubgraphAlignmentResult result;
+  result.hypotheses = {candidate(38, -605.5), candidate(36, -695.5), candidate(26, -434.5)};
+  result.selected_hypothesis = 0;
+  EXPECT_TRUE(SelectionIsContested(result, 0.9));    // 36 >= 0.9 * 38, both ruled out
+  EXPECT_FALSE(SelectionIsContested(result, 0.96));  // 36 < 0.96 * 38
+  EXPECT_FALSE(SelectionIsContested(result, 0.0));   // off
+  result.hypotheses[1].coverage_score = 12.0;        // the coverage admits the rival only
+  EXPECT_FALSE(SelectionIsContested(result, 0.9));
+  result.hypotheses[1].coverage_score = -695.5;
+  result.hypotheses[0].distinctive_witness = true;   // chosen as the witness, not by its size
+  EXPECT_FALSE(SelectionIsContested(result, 0.9));
+  result.hypotheses[0].distinctive_witness = false;
+  result.selected_hypothesis = 1;  // 36 won against 38 for another reason; 26 is no near tie
+  EXPECT_FALSE(SelectionIsContested(result, 0.8));
+  result.selected_hypothesis = -1;
+  EXPECT_FALSE(SelectionIsContested(result, 0.9));
+}
+
 TEST(SubgraphAlignment, SameSeedSameDecisions) {
   TwoSubgraphs setup;
   SubgraphAlignmentOptions options;

@@ -568,4 +568,21 @@ SubgraphAlignmentResult AlignSubgraphPair(const ViewGraph& graph, const Subgraph
   return result;
 }
 
+bool SelectionIsContested(const SubgraphAlignmentResult& alignment, double ratio) {
+  if (!(ratio > 0.0) || alignment.selected_hypothesis < 0) return false;
+  const std::vector<AlignmentHypothesis>& candidates = alignment.hypotheses;
+  const AlignmentHypothesis& selected = candidates[static_cast<size_t>(alignment.selected_hypothesis)];
+  // A witness's candidate, or a smaller one the coverage chose, was not chosen by its size.
+  if (selected.distinctive_witness) return false;
+  for (size_t h = 0; h < candidates.size(); ++h) {
+    const AlignmentHypothesis& rival = candidates[h];
+    if (static_cast<int>(h) == alignment.selected_hypothesis || rival.distinctive_witness) continue;
+    const bool same_verdict = (rival.coverage_score < 0.0) == (selected.coverage_score < 0.0);
+    const double size = static_cast<double>(rival.consensus_size);
+    const double selected_size = static_cast<double>(selected.consensus_size);
+    if (same_verdict && size <= selected_size && size >= ratio * selected_size) return true;
+  }
+  return false;
+}
+
 }  // namespace sfm_pruning

@@ -223,6 +223,14 @@ EdgeInvalidation InterSubgraphInvalidation(const InterSubgraphEdgeDecision& deci
 // and intrinsics of the j images, `features` their keypoints.
 // `distinctive_weights` (DistinctiveMatchWeights of the graph, or null: no witness) enables
 // Options::distinctive_witness_ratio.
+// Whether the selected candidate won a near tie on consensus size alone: another candidate, no
+// larger and at least `ratio` times its consensus, is ruled out or admitted by the coverage
+// break-even alike, and neither is the distinctive witness's (a witness, or a smaller candidate
+// the coverage preferred, was chosen for a reason). Never with ratio <= 0.
+// On a symmetric object the true and the mirrored transform can be found with 38 and 36 edges,
+// both below the break-even (orbit_symmetric, precise verification, seed 4): a coin toss.
+bool SelectionIsContested(const SubgraphAlignmentResult& alignment, double ratio);
+
 SubgraphAlignmentResult AlignSubgraphPair(const ViewGraph& graph, const SubgraphSolution& k1,
                                           const SubgraphSolution& k2, const SfmData& views_and_intrinsics,
                                           const FeaturesPerView& features,

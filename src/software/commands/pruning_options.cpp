@@ -213,6 +213,12 @@ void AddPruningOptions(CLI::App* cmd, sfm_pruning::ViewGraphPruningOptions* opti
   group->add_option("--prune_min_edges_for_trust", loops.min_edges_for_trust,
                     "trusted_forest: subgraph pairs of fewer connecting edges are ranked after all the others")
       ->capture_default_str();
+  group->add_option("--prune_contested_ratio", loops.contested_candidate_ratio,
+                    "trusted_forest: a pair whose RANSAC found a rival candidate of at least this share of the "
+                    "selected consensus, which the coverage does not tell apart, is ranked after the decisive "
+                    "pairs (0: off; docs/pruning.md)")
+      ->check(CLI::Range(0.0, 1.0))
+      ->capture_default_str();
   using LinkTrust = sfm_pruning::PairTrustMeasure;
   group->add_option("--prune_link_trust", options->link_trust,
                     "What ranks subgraph pairs in the loop check: match_coverage, or distinctive (the mean "

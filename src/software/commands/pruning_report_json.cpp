@@ -110,7 +110,10 @@ nlohmann::json PruningReportJson(const sfm_pruning::ViewGraphPruningReport& prun
                      {"rejected_by_cycle", pair.rejected_by_cycle},
                      {"trust", pair.trust},
                      {"coverage", pair.coverage}});
-    if (pair.judged_by_forest) pairs.back()["forest_decision"] = LinkDecisionName(pair.forest_decision);
+    if (pair.judged_by_forest) {
+      pairs.back()["forest_decision"] = LinkDecisionName(pair.forest_decision);
+      pairs.back()["contested"] = pair.contested;
+    }
     if (pair.unverified_rotation_error_deg >= 0.0) {
       pairs.back()["unverified_rotation_error_deg"] = pair.unverified_rotation_error_deg;
       pairs.back()["cut_by_rotation"] = pair.cut_by_rotation;
