@@ -187,6 +187,8 @@ TEST(SubgraphAlignment, MatchCoverageKeepsTrueEdgesOutnumberedByTwinEdges) {
   EXPECT_EQ(3 * coverage.hypotheses[0].matched_landmarks, coverage.hypotheses[0].expected_landmarks);
   EXPECT_LT(coverage.hypotheses[0].coverage_score, 0.0);  // ruled out
   EXPECT_GT(coverage.hypotheses[1].coverage_score, 0.0);
+  EXPECT_TRUE(coverage.hypotheses[0].ruled_out);
+  EXPECT_FALSE(coverage.hypotheses[1].ruled_out);
   for (const auto& decision : coverage.edges) {
     const bool is_true = std::count(true_edges.begin(), true_edges.end(),
                                     ViewPair{decision.placement.view_i, decision.placement.view_j}) > 0;
@@ -224,21 +226,21 @@ TEST(SubgraphAlignment, BelowTheBreakEvenTheCandidatesAreComparedWithEachOther) 
 }
 
 TEST(SubgraphAlignment, ASelectionIsContestedByARivalTheCoverageDoesNotTellApart) {
-  const auto candidate = [](size_t consensus, double coverage_score) {
+  const auto candidate = [](size_t consensus, bool ruled_out) {
     AlignmentHypothesis hypothesis;
     hypothesis.consensus_size = consensus;
-    hypothesis.coverage_score = coverage_score;
+    hypothesis.ruled_out = ruled_out;
     return hypothesis;
   };
   SubgraphAlignmentResult result;
-  result.hypotheses = {candidate(38, -605.5), candidate(36, -695.5), candidate(26, -434.5)};
+  result.hypotheses = {candidate(38, false), candidate(36, false), candidate(26, false)};
   result.selected_hypothesis = 0;
-  EXPECT_TRUE(SelectionIsContested(result, 0.9));    // 36 >= 0.9 * 38, both ruled out
+  EXPECT_TRUE(SelectionIsContested(result, 0.9));    // 36 >= 0.9 * 38, both admitted
   EXPECT_FALSE(SelectionIsContested(result, 0.96));  // 36 < 0.96 * 38
   EXPECT_FALSE(SelectionIsContested(result, 0.0));   // off
-  result.hypotheses[1].coverage_score = 12.0;        // the coverage admits the rival only
+  result.hypotheses[1].ruled_out = true;             // the coverage rules the rival out
   EXPECT_FALSE(SelectionIsContested(result, 0.9));
-  result.hypotheses[1].coverage_score = -695.5;
+  result.hypotheses[1].ruled_out = false;
   result.hypotheses[0].distinctive_witness = true;   // chosen as the witness, not by its size
   EXPECT_FALSE(SelectionIsContested(result, 0.9));
   result.hypotheses[0].distinctive_witness = false;

@@ -388,6 +388,7 @@ void RunRansac(const std::vector<ChainedRelativePose>& chains, const std::vector
   // seed 9: an empty candidate beat one of 3 edges and the pair lost its transform).
   for (size_t c = 0; c < candidates.size(); ++c) {
     if (result->hypotheses[c].consensus_size == 0 && consensus_found) ruled_out[c] = true;
+    result->hypotheses[c].ruled_out = ruled_out[c];
   }
   for (size_t c = 1; c < candidates.size(); ++c) {
     const bool larger = result->hypotheses[c].consensus_size > result->hypotheses[chosen].consensus_size;
@@ -577,7 +578,7 @@ bool SelectionIsContested(const SubgraphAlignmentResult& alignment, double ratio
   for (size_t h = 0; h < candidates.size(); ++h) {
     const AlignmentHypothesis& rival = candidates[h];
     if (static_cast<int>(h) == alignment.selected_hypothesis || rival.distinctive_witness) continue;
-    const bool same_verdict = (rival.coverage_score < 0.0) == (selected.coverage_score < 0.0);
+    const bool same_verdict = rival.ruled_out == selected.ruled_out;
     const double size = static_cast<double>(rival.consensus_size);
     const double selected_size = static_cast<double>(selected.consensus_size);
     if (same_verdict && size <= selected_size && size >= ratio * selected_size) return true;

@@ -177,6 +177,9 @@ struct AlignmentHypothesis {
   // and whether the candidate is the most distinctive edge's (Options::distinctive_witness_ratio).
   double distinctive_share = -1.0;
   bool distinctive_witness = false;
+  // Ruled out by the coverage (below the break-even, or, when every candidate is, relatively to
+  // the best one's coverage; or empty beside a supported candidate), as the selection saw it.
+  bool ruled_out = false;
   int num_samples = 0;      // samples its RANSAC run tried (0: the witness's candidate)
   bool enumerated = false;  // every distinct sample of the run's pool (Options::max_enumerated_samples)
 
@@ -224,9 +227,9 @@ EdgeInvalidation InterSubgraphInvalidation(const InterSubgraphEdgeDecision& deci
 // `distinctive_weights` (DistinctiveMatchWeights of the graph, or null: no witness) enables
 // Options::distinctive_witness_ratio.
 // Whether the selected candidate won a near tie on consensus size alone: another candidate, no
-// larger and at least `ratio` times its consensus, is ruled out or admitted by the coverage
-// break-even alike, and neither is the distinctive witness's (a witness, or a smaller candidate
-// the coverage preferred, was chosen for a reason). Never with ratio <= 0.
+// larger and at least `ratio` times its consensus, has the same AlignmentHypothesis::ruled_out
+// verdict, and neither is the distinctive witness's (a witness, or a candidate the coverage
+// preferred, was chosen for a reason). Never with ratio <= 0.
 // On a symmetric object the true and the mirrored transform can be found with 38 and 36 edges,
 // both below the break-even (orbit_symmetric, precise verification, seed 4): a coin toss.
 bool SelectionIsContested(const SubgraphAlignmentResult& alignment, double ratio);

@@ -90,6 +90,7 @@ nlohmann::json PruningReportJson(const sfm_pruning::ViewGraphPruningReport& prun
                             {"expected_landmarks", h.expected_landmarks},
                             {"matched_landmarks", h.matched_landmarks},
                             {"coverage_score", h.coverage_score},
+                            {"ruled_out", h.ruled_out},
                             {"distinctive_share", h.distinctive_share},
                             {"distinctive_witness", h.distinctive_witness},
                             {"samples", h.num_samples},
