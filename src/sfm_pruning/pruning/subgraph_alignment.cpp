@@ -573,7 +573,8 @@ bool SelectionIsContested(const SubgraphAlignmentResult& alignment, double ratio
   if (!(ratio > 0.0) || alignment.selected_hypothesis < 0) return false;
   const std::vector<AlignmentHypothesis>& candidates = alignment.hypotheses;
   const AlignmentHypothesis& selected = candidates[static_cast<size_t>(alignment.selected_hypothesis)];
-  // A witness's candidate, or a smaller one the coverage chose, was not chosen by its size.
+  // The witness's candidate was chosen for its distinctiveness, not its size; so was a candidate
+  // the coverage preferred over a larger one (hence rivals larger than the selection do not count).
   if (selected.distinctive_witness) return false;
   for (size_t h = 0; h < candidates.size(); ++h) {
     const AlignmentHypothesis& rival = candidates[h];

@@ -11,9 +11,10 @@
 //
 // Kruskal's order, most trusted pair first among the pairs of at least min_edges_for_trust
 // connecting edges, then among the others; within each group a contested pair (its RANSAC's
-// selection was a near tie, SubgraphLoopOptions::contested_candidate_ratio) after the others. (The trust of one or two edges is the noisiest, and such
-// a pair seldom has a transform: in the forest it leaves every cycle through it unverifiable.
-// castle-P19 lost a 16-edge true pair that way to a one-edge pair of trust 1.49.)
+// selection was a near tie, SubgraphLoopOptions::contested_candidate_ratio) after the others.
+// (The trust of one or two edges is the noisiest, and such a pair seldom has a transform: in the
+// forest it leaves every cycle through it unverifiable. castle-P19 lost a 16-edge true pair that
+// way to a one-edge pair of trust 1.49.)
 //   - a pair joining two groups of subgraphs not yet connected is a forest pair: kept (with the
 //     edges its RANSAC kept; a pair without a transform keeps all its edges, nothing says which
 //     of them are wrong);
