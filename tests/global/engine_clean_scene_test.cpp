@@ -113,6 +113,57 @@ TEST(EngineCleanScene, VerifiedPairsWithoutPosesAreReestimated) {
   }
 }
 
+TEST(EngineCleanScene, RefiningThePositionedModelReachesTheFullSolvesAccuracy) {
+  const SyntheticScene& scene = CleanScene();
+  GlobalEngineOptions positioning_only;
+  positioning_only.bundle_adjust = false;
+  const EngineRun positioned = RunEngineOn(scene, scene.putative_matches, {}, positioning_only);
+  ASSERT_TRUE(positioned.engine.success) << positioned.engine.message;
+  EXPECT_TRUE(positioned.engine.bundle_adjustments.empty());
+  ASSERT_EQ(positioned.engine.timings.size(), 3u);
+  EXPECT_EQ(positioned.engine.timings.back().stage, "positioning");
+
+  const SfmData listing = Listing(scene);
+  const ViewGraph graph = BuildViewGraphFromMatches({}, listing, scene.features, scene.putative_matches);
+  SfmData refined;
+  GlobalEngineReport report;
+  RefineGlobalModel({}, graph, positioned.model, scene.features, &refined, &report);
+  ASSERT_TRUE(report.success) << report.message;
+  EXPECT_EQ(report.num_registered_views, scene.ground_truth.views.size());
+  EXPECT_GT(report.num_landmarks, 500u);
+  EXPECT_LT(report.final_rms_px, 1.5);
+  EXPECT_GE(AucAt(EvaluateModel(refined, scene.ground_truth), 3.0), 97.0);
+  // No rotation averaging and no positioning: the poses came from the model.
+  ASSERT_EQ(report.timings.size(), 3u);
+  EXPECT_EQ(report.timings[0].stage, "tracks");
+  EXPECT_EQ(report.timings[1].stage, "triangulation from the poses");
+  EXPECT_EQ(report.timings[2].stage, "bundle adjustment");
+}
+
+TEST(EngineCleanScene, RefiningAModelDropsTheViewsItDidNotPose) {
+  const SyntheticScene& scene = CleanScene();
+  const EngineRun run = RunEngineOn(scene, scene.putative_matches);
+  ASSERT_TRUE(run.engine.success) << run.engine.message;
+  SfmData initial = run.model;
+  const IndexT unposed = initial.views.begin()->first;
+  initial.poses.erase(initial.views.at(unposed).id_pose);
+
+  const SfmData listing = Listing(scene);
+  const ViewGraph graph = BuildViewGraphFromMatches({}, listing, scene.features, scene.putative_matches);
+  SfmData refined;
+  GlobalEngineReport report;
+  RefineGlobalModel({}, graph, initial, scene.features, &refined, &report);
+  ASSERT_TRUE(report.success) << report.message;
+  EXPECT_EQ(report.num_registered_views, scene.ground_truth.views.size() - 1);
+  EXPECT_FALSE(refined.IsPosed(unposed));
+  ASSERT_EQ(report.dropped_views.size(), 1u);
+  EXPECT_EQ(report.dropped_views[0].view_id, unposed);
+  EXPECT_EQ(report.dropped_views[0].reason, "not posed by the model refined");
+  // The AUC counts the pairs with the unposed view as failures: 19 of the 20 views' 190 pairs.
+  const double n = static_cast<double>(scene.ground_truth.views.size());
+  EXPECT_GE(AucAt(EvaluateModel(refined, scene.ground_truth), 3.0), 97.0 * (n - 2.0) / n);
+}
+
 TEST(EngineCleanScene, EmptyGraphFailsWithNoEdges) {
   const SyntheticScene& scene = CleanScene();
   const SfmData listing = Listing(scene);

@@ -81,11 +81,16 @@ TEST(GlobalPositioning, DeterministicForASeed) {
   EXPECT_TRUE(first == second);
 }
 
-TEST(GlobalPositioning, RandomStartsKeepTheStartAgreeingWithMostRays) {
+// The small scene with 0.5 px noise and 10 % wrong observations.
+testing::PositioningScene NoisySceneWithOutliers() {
   testing::PositioningSceneOptions scene_options = testing::SmallSceneOptions();
   scene_options.pixel_noise_std = 0.5;
   scene_options.outlier_ratio = 0.1;
-  testing::PositioningScene scene = testing::MakePositioningScene(scene_options);
+  return testing::MakePositioningScene(scene_options);
+}
+
+TEST(GlobalPositioning, RandomStartsKeepTheStartAgreeingWithMostRays) {
+  testing::PositioningScene scene = NoisySceneWithOutliers();
   const std::vector<Track> tracks = TracksOf(scene);
   SfmData single = scene.sfm_data, restarted = scene.sfm_data, again = scene.sfm_data;
   const PositioningResult one = PositionCamerasAndPoints({}, scene.rotations, tracks, scene.features, &single);
@@ -112,6 +117,28 @@ TEST(GlobalPositioning, RandomStartsKeepTheStartAgreeingWithMostRays) {
   // Deterministic for a seed, starts included.
   PositionCamerasAndPoints(options, scene.rotations, tracks, scene.features, &again);
   EXPECT_TRUE(again == restarted);
+}
+
+TEST(GlobalPositioning, ScreenedStartsSolveOnlyTheBestOneToTheEnd) {
+  testing::PositioningScene scene = NoisySceneWithOutliers();
+  const std::vector<Track> tracks = TracksOf(scene);
+  SfmData full = scene.sfm_data, screened = scene.sfm_data;
+  GlobalPositioningOptions options;
+  options.solver.num_random_starts = 4;
+  const PositioningResult every = PositionCamerasAndPoints(options, scene.rotations, tracks, scene.features, &full);
+  options.solver.start_screening_iterations = 5;
+  const PositioningResult best = PositionCamerasAndPoints(options, scene.rotations, tracks, scene.features, &screened);
+  ASSERT_TRUE(every.success && best.success) << every.message << best.message;
+
+  // Each start was scored after 5 iterations, the kept one agrees with the most rays then, and
+  // finishing it alone reaches the scene as solving every start to the end does.
+  ASSERT_EQ(best.consistent_constraints_per_start.size(), 4u);
+  const auto& counts = best.consistent_constraints_per_start;
+  EXPECT_EQ(counts[best.selected_start], *std::max_element(counts.begin(), counts.end()));
+  EXPECT_GT(best.num_solver_iterations, 5);
+  EXPECT_LE(best.num_solver_iterations, 5 + options.solver.max_num_iterations + options.solver.max_num_resolve_iterations);
+  EXPECT_LT(testing::MaxRelativeCenterError(scene.true_poses, screened), 0.01);
+  EXPECT_LT(testing::MaxRelativeCenterError(scene.true_poses, full), 0.01);
 }
 
 TEST(GlobalPositioning, FailsWithoutTracksAndLeavesTheSceneUntouched) {

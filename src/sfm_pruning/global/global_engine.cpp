@@ -57,6 +57,7 @@ PositioningSolverOptions WithEngineSolverSettings(const GlobalEngineOptions& opt
   solver.max_num_iterations = options.positioning_max_num_iterations;
   solver.max_num_resolve_iterations = options.positioning_max_num_resolve_iterations;
   solver.num_random_starts = options.positioning_random_starts;
+  solver.start_screening_iterations = options.positioning_start_screening_iterations;
   solver.progress = progress;
   return solver;
 }
@@ -67,15 +68,13 @@ bool Fail(const std::string& message, GlobalEngineReport* report) {
   return false;
 }
 
-// The stages after the graph copy; false (with report->message) on failure.
-bool RunStages(const GlobalEngineOptions& options, const ViewGraph& graph, const FeaturesPerView& features,
-               SfmData* out, GlobalEngineReport* report, std::map<IndexT, std::string>* dropped,
-               const ProgressCallback& progress) {
-  // 1. Rotation averaging.
+// 1. Rotation averaging: `rotations` of the views it keeps, `kept` = the graph among them.
+bool AverageRotations(const GlobalEngineOptions& options, const ViewGraph& graph, GlobalEngineReport* report,
+                      std::map<IndexT, std::string>* dropped, std::map<IndexT, Eigen::Matrix3d>* rotations,
+                      ViewGraph* kept, const ProgressCallback& progress) {
   ViewGraph work = graph;
-  std::map<IndexT, Eigen::Matrix3d> rotations;
   Timed("rotation averaging", report, [&]() {
-    report->rotation = EstimateGlobalRotations(&work, options.rotation, &rotations, progress);
+    report->rotation = EstimateGlobalRotations(&work, options.rotation, rotations, progress);
   });
   if (!report->rotation.success) return Fail("rotation averaging: " + report->rotation.failure_reason, report);
   const NodeGroup initial_component = LargestComponent(graph);
@@ -86,42 +85,50 @@ bool RunStages(const GlobalEngineOptions& options, const ViewGraph& graph, const
   }
   report->num_filtered_edges = report->rotation.filtered_edges.size();
   const std::set<IndexT> estimated(report->rotation.estimated_views.begin(), report->rotation.estimated_views.end());
-  const ViewGraph kept = work.InducedSubgraph(estimated);
-  report->num_rotation_edges = kept.NumValidEdges();
+  *kept = work.InducedSubgraph(estimated);
+  report->num_rotation_edges = kept->NumValidEdges();
+  return true;
+}
 
-  // 2. Tracks.
-  TrackBuildingResult tracks;
-  TrackBuildingOptions track_options = options.tracks;
-  if (estimated.size() <= 3) track_options.min_track_length = std::min<size_t>(track_options.min_track_length, 2);
-  Timed("tracks", report, [&]() { tracks = BuildTracks(kept, track_options); });
-  report->num_tracks = tracks.tracks.size();
-  report->track_counts = tracks;
+// 2. Tracks of `kept` (min length 2 for graphs of at most 3 views).
+bool BuildEngineTracks(const GlobalEngineOptions& options, const ViewGraph& kept, size_t num_views,
+                       GlobalEngineReport* report, TrackBuildingOptions* track_options, TrackBuildingResult* tracks) {
+  *track_options = options.tracks;
+  if (num_views <= 3) track_options->min_track_length = std::min<size_t>(track_options->min_track_length, 2);
+  Timed("tracks", report, [&]() { *tracks = BuildTracks(kept, *track_options); });
+  report->num_tracks = tracks->tracks.size();
+  report->track_counts = *tracks;
   report->track_counts.tracks.clear();
-  if (tracks.tracks.empty()) return Fail("no track of the required length", report);
+  return !tracks->tracks.empty() || Fail("no track of the required length", report);
+}
 
-  // 3. Positioning.
+// 3. Positioning.
+bool PositionViews(const GlobalEngineOptions& options, const ViewGraph& kept,
+                   const std::map<IndexT, Eigen::Matrix3d>& rotations, const std::vector<Track>& tracks,
+                   size_t min_track_length, const FeaturesPerView& features, SfmData* out, GlobalEngineReport* report,
+                   const ProgressCallback& progress) {
   Timed("positioning", report, [&]() {
     if (options.positioning == PositioningMethod::kGlobalPositioning) {
       GlobalPositioningOptions positioning = options.global_positioning;
       positioning.solver = WithEngineSolverSettings(options, positioning.solver, progress);
       const bool on_stars = options.positioning_tracks == PositioningTracks::kMatchStars;
-      const std::vector<Track> stars = on_stars ? BuildMatchStarTracks(kept, track_options.min_track_length)
-                                                : std::vector<Track>{};
-      report->positioning = PositionCamerasAndPoints(positioning, rotations, tracks.tracks, features, out,
-                                                     on_stars ? &stars : nullptr);
+      const std::vector<Track> stars =
+          on_stars ? BuildMatchStarTracks(kept, min_track_length) : std::vector<Track>{};
+      report->positioning =
+          PositionCamerasAndPoints(positioning, rotations, tracks, features, out, on_stars ? &stars : nullptr);
     } else {
       TranslationAveragingOptions averaging = options.translation_averaging;
       averaging.solver = WithEngineSolverSettings(options, averaging.solver, progress);
       report->positioning =
-          PositionCamerasByTranslationAveraging(averaging, kept, rotations, tracks.tracks, features, out).positioning;
+          PositionCamerasByTranslationAveraging(averaging, kept, rotations, tracks, features, out).positioning;
     }
   });
-  if (!report->positioning.success) return Fail("positioning: " + report->positioning.message, report);
-  for (const IndexT view_id : estimated) {
-    if (!out->IsPosed(view_id)) dropped->emplace(view_id, "not positioned (no usable track)");
-  }
+  return report->positioning.success || Fail("positioning: " + report->positioning.message, report);
+}
 
-  // 4. Bundle adjustment rounds, then the final adjustment and filter.
+// 4. Bundle adjustment rounds, then the final adjustment and filter; then the weak views go.
+bool AdjustAndFilter(const GlobalEngineOptions& options, SfmData* out, GlobalEngineReport* report,
+                     std::map<IndexT, std::string>* dropped, const ProgressCallback& progress) {
   BundleAdjustmentOptions bundle = options.bundle;
   bundle.num_threads = options.num_threads;
   const size_t num_adjustments = static_cast<size_t>(std::max(options.num_bundle_rounds, 0)) + 1;
@@ -156,6 +163,87 @@ bool RunStages(const GlobalEngineOptions& options, const ViewGraph& graph, const
   return true;
 }
 
+// RunGlobalEngine's stages after the graph copy; false (with report->message) on failure.
+bool RunStages(const GlobalEngineOptions& options, const ViewGraph& graph, const FeaturesPerView& features,
+               SfmData* out, GlobalEngineReport* report, std::map<IndexT, std::string>* dropped,
+               const ProgressCallback& progress) {
+  std::map<IndexT, Eigen::Matrix3d> rotations;
+  ViewGraph kept;
+  if (!AverageRotations(options, graph, report, dropped, &rotations, &kept, progress)) return false;
+  TrackBuildingOptions track_options;
+  TrackBuildingResult tracks;
+  if (!BuildEngineTracks(options, kept, rotations.size(), report, &track_options, &tracks)) return false;
+  if (!PositionViews(options, kept, rotations, tracks.tracks, track_options.min_track_length, features, out, report,
+                     progress)) {
+    return false;
+  }
+  for (const auto& [view_id, rotation] : rotations) {
+    if (!out->IsPosed(view_id)) dropped->emplace(view_id, "not positioned (no usable track)");
+  }
+  return !options.bundle_adjust || AdjustAndFilter(options, out, report, dropped, progress);
+}
+
+// RefineGlobalModel's stages: the views `initial` poses keep those poses; the tracks of the graph
+// among them are triangulated from them (the positioning's angular filter), then adjusted.
+bool RunRefinementStages(const GlobalEngineOptions& options, const ViewGraph& graph, const SfmData& initial,
+                         const FeaturesPerView& features, SfmData* out, GlobalEngineReport* report,
+                         std::map<IndexT, std::string>* dropped, const ProgressCallback& progress) {
+  std::map<IndexT, Eigen::Matrix3d> rotations;
+  std::map<IndexT, Eigen::Vector3d> centers;
+  std::set<IndexT> posed;
+  for (const IndexT view_id : initial.PosedViewIds()) {
+    const Pose& pose = initial.PoseOf(initial.views.at(view_id));
+    rotations[view_id] = pose.rotation;
+    centers[view_id] = pose.center;
+    posed.insert(view_id);
+  }
+  for (const IndexT view_id : graph.Nodes()) {
+    if (posed.count(view_id) == 0) dropped->emplace(view_id, "not posed by the model refined");
+  }
+  const ViewGraph kept = graph.InducedSubgraph(posed);
+  report->num_rotation_edges = kept.NumValidEdges();
+  TrackBuildingOptions track_options;
+  TrackBuildingResult tracks;
+  if (!BuildEngineTracks(options, kept, posed.size(), report, &track_options, &tracks)) return false;
+  Timed("triangulation from the poses", report, [&]() {
+    report->positioning =
+        TriangulateFromPoses(options.global_positioning, rotations, centers, tracks.tracks, features, out);
+  });
+  if (!report->positioning.success) return Fail("triangulation: " + report->positioning.message, report);
+  return !options.bundle_adjust || AdjustAndFilter(options, out, report, dropped, progress);
+}
+
+// RunGlobalEngine and RefineGlobalModel around their stages: the output reset to the views and
+// intrinsics of `base`, the counts of the report, and on failure an output without poses.
+template <typename Stages>
+void RunEngine(const ViewGraph& graph, const SfmData& base, SfmData* out, GlobalEngineReport* report,
+               Stages&& stages) {
+  GlobalEngineReport local;
+  if (report == nullptr) report = &local;
+  *report = {};
+  const Clock::time_point start = Clock::now();
+  *out = base;
+  out->poses.clear();
+  out->structure.clear();
+  report->num_input_views = graph.NumNodes();
+  report->num_input_edges = graph.NumValidEdges();
+
+  std::map<IndexT, std::string> dropped;
+  if (report->num_input_edges == 0) {
+    Fail("the view graph has no edges", report);
+  } else if (stages(report, &dropped)) {
+    report->success = true;
+  } else {
+    out->poses.clear();
+    out->structure.clear();
+  }
+  for (const auto& [view_id, reason] : dropped) report->dropped_views.push_back({view_id, reason});
+  report->num_registered_views = out->PosedViewIds().size();
+  report->num_landmarks = out->structure.size();
+  for (const auto& [landmark_id, landmark] : out->structure) report->num_observations += landmark.observations.size();
+  report->total_seconds = SecondsSince(start);
+}
+
 }  // namespace
 
 GlobalEngineOptions WithFocalSearchSchedule(GlobalEngineOptions options, const FocalSearchSchedule& schedule) {
@@ -168,30 +256,17 @@ GlobalEngineOptions WithFocalSearchSchedule(GlobalEngineOptions options, const F
 void RunGlobalEngine(const GlobalEngineOptions& options, const ViewGraph& graph, const SfmData& views_and_intrinsics,
                      const FeaturesPerView& features, SfmData* out, GlobalEngineReport* report,
                      const ProgressCallback& progress) {
-  GlobalEngineReport local;
-  if (report == nullptr) report = &local;
-  *report = {};
-  const Clock::time_point start = Clock::now();
-  *out = views_and_intrinsics;
-  out->poses.clear();
-  out->structure.clear();
-  report->num_input_views = graph.NumNodes();
-  report->num_input_edges = graph.NumValidEdges();
+  RunEngine(graph, views_and_intrinsics, out, report, [&](GlobalEngineReport* r, std::map<IndexT, std::string>* d) {
+    return RunStages(options, graph, features, out, r, d, progress);
+  });
+}
 
-  std::map<IndexT, std::string> dropped;
-  if (report->num_input_edges == 0) {
-    Fail("the view graph has no edges", report);
-  } else if (RunStages(options, graph, features, out, report, &dropped, progress)) {
-    report->success = true;
-  } else {
-    out->poses.clear();
-    out->structure.clear();
-  }
-  for (const auto& [view_id, reason] : dropped) report->dropped_views.push_back({view_id, reason});
-  report->num_registered_views = out->PosedViewIds().size();
-  report->num_landmarks = out->structure.size();
-  for (const auto& [landmark_id, landmark] : out->structure) report->num_observations += landmark.observations.size();
-  report->total_seconds = SecondsSince(start);
+void RefineGlobalModel(const GlobalEngineOptions& options, const ViewGraph& graph, const SfmData& initial,
+                       const FeaturesPerView& features, SfmData* out, GlobalEngineReport* report,
+                       const ProgressCallback& progress) {
+  RunEngine(graph, initial, out, report, [&](GlobalEngineReport* r, std::map<IndexT, std::string>* d) {
+    return RunRefinementStages(options, graph, initial, features, out, r, d, progress);
+  });
 }
 
 }  // namespace sfm_pruning

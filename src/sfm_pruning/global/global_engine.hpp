@@ -88,6 +88,8 @@ struct GlobalEngineOptions {
   // num_random_starts): the one whose solution agrees with the most rays is kept. 1 = GLOMAP's
   // single start; each further start costs one more solve.
   int positioning_random_starts = 1;
+  // PositioningSolverOptions::start_screening_iterations (both methods).
+  int positioning_start_screening_iterations = 0;
   double intermediate_function_tolerance = 1e-4;  // adjustments before the last
   double final_function_tolerance = 1e-5;         // the last adjustment (GLOMAP's value)
   // Iteration cap of the adjustments before the last (the last keeps bundle.max_num_iterations).
@@ -95,6 +97,8 @@ struct GlobalEngineOptions {
   // on sequential_large@2000 they took 72 and 61 iterations at 1.2-1.4 s each to reach 1e-4, most
   // of them shaving the last 3 % off the cost, which the filter then changes anyway.
   int intermediate_max_num_iterations = 25;
+  // false: stop after the positioning (no adjustment, no filter: the model audit's quick solve).
+  bool bundle_adjust = true;
   // After the final filter, views observing fewer landmarks than this lose their pose.
   size_t min_observations_per_view = 10;
   // Overrides the positioning solvers' seeds (both methods).
@@ -156,5 +160,16 @@ struct GlobalEngineReport {
 void RunGlobalEngine(const GlobalEngineOptions& options, const ViewGraph& graph,
                      const SfmData& views_and_intrinsics, const FeaturesPerView& features, SfmData* out,
                      GlobalEngineReport* report, const ProgressCallback& progress = {});
+
+// The engine's stages after the positioning, from the poses of `initial` instead of a solve:
+// the views `initial` poses keep their poses (the other views of `graph` are dropped), the tracks
+// of `graph` among them are triangulated from those poses, then adjusted and filtered as in
+// RunGlobalEngine. For a graph that differs by a few edges from the one `initial` was solved from
+// (the model audit, view_graph_pruning.hpp): the rotation averaging and the positioning, most of a
+// solve's time, are not repeated. Same output contract as RunGlobalEngine (`out` keeps the
+// intrinsics of `initial`).
+void RefineGlobalModel(const GlobalEngineOptions& options, const ViewGraph& graph, const SfmData& initial,
+                       const FeaturesPerView& features, SfmData* out, GlobalEngineReport* report,
+                       const ProgressCallback& progress = {});
 
 }  // namespace sfm_pruning

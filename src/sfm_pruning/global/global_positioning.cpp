@@ -91,4 +91,24 @@ PositioningResult PositionCamerasAndPoints(const GlobalPositioningOptions& optio
   return result;
 }
 
+PositioningResult TriangulateFromPoses(const GlobalPositioningOptions& options,
+                                       const std::map<IndexT, Eigen::Matrix3d>& rotations,
+                                       const std::map<IndexT, Eigen::Vector3d>& centers,
+                                       const std::vector<Track>& tracks, const FeaturesPerView& features,
+                                       SfmData* sfm_data) {
+  PositioningResult result;
+  result.message = CheckOnePosePerView(*sfm_data, rotations);
+  if (!result.message.empty()) return result;
+  const std::vector<PositioningTrack> rays = MakePositioningTracks(*sfm_data, features, rotations, tracks);
+  if (rays.empty()) {
+    result.message = "no track is seen by two posed views";
+    return result;
+  }
+  const std::vector<std::optional<Eigen::Vector3d>> points =
+      TriangulateTracks(rays, rotations, centers, options.max_angular_residual_deg, TriangulationMethod::kDlt);
+  WritePositionedScene(rotations, centers, rays, points, options.max_angular_residual_deg, sfm_data, &result);
+  result.success = true;
+  return result;
+}
+
 }  // namespace sfm_pruning

@@ -55,4 +55,13 @@ PositioningResult PositionCamerasAndPoints(const GlobalPositioningOptions& optio
                                            const std::vector<Track>& tracks, const FeaturesPerView& features,
                                            SfmData* sfm_data, const std::vector<Track>* solve_tracks = nullptr);
 
+// The same output as PositionCamerasAndPoints, without a solve: the views of `centers` (and
+// `rotations`) keep those poses, and every track is triangulated from them and filtered by
+// max_angular_residual_deg. For a graph whose poses are already known (RefineGlobalModel).
+PositioningResult TriangulateFromPoses(const GlobalPositioningOptions& options,
+                                       const std::map<IndexT, Eigen::Matrix3d>& rotations,
+                                       const std::map<IndexT, Eigen::Vector3d>& centers,
+                                       const std::vector<Track>& tracks, const FeaturesPerView& features,
+                                       SfmData* sfm_data);
+
 }  // namespace sfm_pruning

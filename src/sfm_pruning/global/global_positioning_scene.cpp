@@ -29,13 +29,19 @@ PositioningSolverSummary SolveFromRandomStart(const PositioningSolverOptions& op
                                               const std::vector<RayConstraint>& constraints, const std::string& stage,
                                               std::vector<Eigen::Vector3d>* positions, PositioningResult* result) {
   const int num_starts = std::max(options.num_random_starts, 1);
+  const bool screening = num_starts > 1 && options.start_screening_iterations > 0;
+  PositioningSolverOptions start_options = options;
+  if (screening) {
+    start_options.max_num_iterations = options.start_screening_iterations;
+    start_options.num_rejection_rounds = 0;
+  }
   PositioningSolverSummary best;
   size_t best_consistent = 0;
   result->consistent_constraints_per_start.clear();
   for (int start = 0; start < num_starts; ++start) {
     std::vector<Eigen::Vector3d> candidate =
         RandomPositions(num_positions, options.init_cube_half_size, StartSeed(options.seed, start));
-    const PositioningSolverSummary summary = SolveRayAlignment(options, constraints, 0, stage, &candidate);
+    const PositioningSolverSummary summary = SolveRayAlignment(start_options, constraints, 0, stage, &candidate);
     const size_t consistent =
         summary.usable ? CountConsistentConstraints(constraints, candidate, options.rejection_threshold_deg) : 0;
     result->consistent_constraints_per_start.push_back(consistent);
@@ -47,6 +53,16 @@ PositioningSolverSummary SolveFromRandomStart(const PositioningSolverOptions& op
     best_consistent = consistent;
     *positions = std::move(candidate);
     result->selected_start = start;
+  }
+  if (screening && best.usable) {
+    // The screened winner goes on for the iterations its screening left of the cap.
+    PositioningSolverOptions rest = options;
+    rest.max_num_iterations = std::max(options.max_num_iterations - options.start_screening_iterations, 1);
+    const PositioningSolverSummary screened = best;
+    best = SolveRayAlignment(rest, constraints, 0, stage, positions, true);
+    best.num_iterations += screened.num_iterations;
+    best.num_solves += screened.num_solves;
+    best.initial_cost = screened.initial_cost;
   }
   result->num_random_starts = num_starts;
   result->message = best.termination;

@@ -63,9 +63,11 @@ class ProgressReporter : public ceres::IterationCallback {
 };
 
 // One Ceres solve over the given constraints.
+// With `warm_start` the positions are a solution (or nearly one) and the scales start at their
+// optimum; from a random start they start at 1.
 ceres::Solver::Summary SolveOnce(const PositioningSolverOptions& options, const std::vector<RayConstraint>& constraints,
                                  size_t fixed_position, const std::string& stage, bool warm_start,
-                                 std::vector<Eigen::Vector3d>* positions) {
+                                 int max_num_iterations, std::vector<Eigen::Vector3d>* positions) {
   // From a random start every scale is 1 (a scale clamped at its bound would mute its constraint,
   // see min_ray_scale). From a solution each starts at its optimum v . d / |d|^2, so that the
   // re-solve begins at the previous cost instead of undoing the scales.
@@ -104,7 +106,6 @@ ceres::Solver::Summary SolveOnce(const PositioningSolverOptions& options, const 
   // the re-solve with 3 % fewer rays (35 flops per entry: simplicial), and Eigen's simplicial
   // factorisation takes 0.09 s for both.
   solver_options.sparse_linear_algebra_library_type = ceres::EIGEN_SPARSE;
-  const int max_num_iterations = warm_start ? options.max_num_resolve_iterations : options.max_num_iterations;
   solver_options.max_num_iterations = max_num_iterations;
   solver_options.function_tolerance = options.function_tolerance;
   solver_options.gradient_tolerance = options.gradient_tolerance;
@@ -142,7 +143,8 @@ double RayConstraintResidualDeg(const RayConstraint& constraint, const std::vect
 
 PositioningSolverSummary SolveRayAlignment(const PositioningSolverOptions& options,
                                            const std::vector<RayConstraint>& constraints, size_t fixed_position,
-                                           const std::string& stage, std::vector<Eigen::Vector3d>* positions) {
+                                           const std::string& stage, std::vector<Eigen::Vector3d>* positions,
+                                           bool from_solution) {
   PositioningSolverSummary summary;
   summary.rejected.assign(constraints.size(), false);
   if (constraints.empty()) {
@@ -153,7 +155,10 @@ PositioningSolverSummary SolveRayAlignment(const PositioningSolverOptions& optio
   std::vector<size_t> kept_index(constraints.size());
   std::iota(kept_index.begin(), kept_index.end(), size_t{0});
   for (int round = 0;; ++round) {
-    const ceres::Solver::Summary ceres_summary = SolveOnce(options, kept, fixed_position, stage, round > 0, positions);
+    const bool resolve = round > 0;
+    const ceres::Solver::Summary ceres_summary =
+        SolveOnce(options, kept, fixed_position, stage, resolve || from_solution,
+                  resolve ? options.max_num_resolve_iterations : options.max_num_iterations, positions);
     if (summary.num_solves++ == 0) summary.initial_cost = ceres_summary.initial_cost;
     summary.usable = ceres_summary.IsSolutionUsable();
     summary.termination = ceres_summary.message;

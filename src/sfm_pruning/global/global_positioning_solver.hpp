@@ -52,6 +52,11 @@ struct PositioningSolverOptions {
   // another, a start can end in a folded minimum. Each start's result is scored by its rays that
   // agree with it (within rejection_threshold_deg), as RANSAC scores a model by its inliers.
   int num_random_starts = 1;
+  // With several starts and n > 0: each start is solved for n iterations only (no rejection
+  // round) and scored; the best is then solved to the end from there. The basin a start falls
+  // into shows early (docs/global.md), so the starts after the first cost n iterations each
+  // instead of a whole solve. 0 = every start solved to the end.
+  int start_screening_iterations = 0;
 
   // Huber still lets gross outliers bias the solution. After a solve, constraints whose ray
   // misses p_target - p_origin by more than rejection_threshold_deg are dropped and the problem
@@ -96,9 +101,11 @@ double RayConstraintResidualDeg(const RayConstraint& constraint, const std::vect
 // no constraint touches are left as they are. Sparse Cholesky (SuiteSparse) on the normal
 // equations; see the .cpp for why not Schur. Rejection
 // rounds stop early when nothing is rejected or everything would be.
-// `stage` names the progress reports.
+// `stage` names the progress reports. `from_solution`: the positions are a partial solve's (a
+// screened start, SolveFromRandomStart), so the scales start at their optimum, not at 1.
 PositioningSolverSummary SolveRayAlignment(const PositioningSolverOptions& options,
                                            const std::vector<RayConstraint>& constraints, size_t fixed_position,
-                                           const std::string& stage, std::vector<Eigen::Vector3d>* positions);
+                                           const std::string& stage, std::vector<Eigen::Vector3d>* positions,
+                                           bool from_solution = false);
 
 }  // namespace sfm_pruning

@@ -13,7 +13,8 @@
 // AuditEdgesAgainstModel measures, for every given edge with both views posed in the model, the
 // share of its matches whose landmark (through either feature) projects within
 // max_transfer_error_px of the other feature. The caller re-admits removed edges that agree and
-// removes kept ones that do not, then solves again (RunPrunedGlobalEngine).
+// removes kept ones that do not, then adjusts the audited graph from the model's poses
+// (RunPrunedGlobalEngine).
 #pragma once
 
 #include <cstddef>
@@ -24,6 +25,13 @@
 #include "sfm_pruning/view_graph/view_graph.hpp"
 
 namespace sfm_pruning {
+
+// How far the solve before the audit goes.
+enum class AuditModelSchedule {
+  kPositioning,       // rotation averaging and positioning only
+  kLightAdjustment,   // + one adjustment on a subset of the landmarks (the others re-triangulated)
+  kFull,              // the final solve's schedule
+};
 
 struct ModelEdgeAuditOptions {
   bool enabled = false;
@@ -37,6 +45,13 @@ struct ModelEdgeAuditOptions {
   // 25–56 true and 57–88 twin matches 0.45–0.79, which bend the model when re-admitted).
   double readmit_agreement = 0.8;
   double keep_agreement = 0.2;
+  // The model the audit judges from, and the final solve after it. A full solve before the final
+  // one doubled GLOBAL_PRUNED's reconstruction time (sequential_large@1000: 178.7 s of 414.9 s;
+  // docs/pruning.md). The audit needs each landmark within a few pixels, not the final accuracy;
+  // and the audited graph differs from the solved one by a few edges, so the final solve can start
+  // from the audited model's poses (RefineGlobalModel) instead of solving from scratch.
+  AuditModelSchedule model_schedule = AuditModelSchedule::kLightAdjustment;
+  bool refine_final = true;  // false: the final solve from scratch (RunGlobalEngine)
 };
 
 struct EdgeAgreement {

@@ -403,6 +403,14 @@ bool ApplyAudit(const ModelEdgeAuditOptions& options, ViewGraph* pruned, PrunedG
   return changed;
 }
 
+// The schedule of the solve before the audit (ModelEdgeAuditOptions::model_schedule).
+GlobalEngineOptions AuditModelOptions(const GlobalEngineOptions& final_solve, AuditModelSchedule schedule) {
+  GlobalEngineOptions options = final_solve;
+  if (schedule == AuditModelSchedule::kPositioning) options.bundle_adjust = false;
+  if (schedule == AuditModelSchedule::kLightAdjustment) options.num_bundle_rounds = 0;
+  return options;
+}
+
 }  // namespace
 
 void RunPrunedGlobalEngine(const PrunedGlobalEngineOptions& options, const ViewGraph& graph,
@@ -413,16 +421,26 @@ void RunPrunedGlobalEngine(const PrunedGlobalEngineOptions& options, const ViewG
   result = PrunedGlobalEngineReport();
   ViewGraph pruned = graph;
   PruneViewGraph(options.pruning, &pruned, views_and_intrinsics, features, &result.pruning, progress);
-  RunGlobalEngine(options.engine, pruned, views_and_intrinsics, features, out, &result.engine, progress);
-  if (!options.pruning.audit.enabled || !result.engine.success) return;
+  if (!options.pruning.audit.enabled) {
+    RunGlobalEngine(options.engine, pruned, views_and_intrinsics, features, out, &result.engine, progress);
+    return;
+  }
+  RunGlobalEngine(AuditModelOptions(options.engine, options.pruning.audit.model_schedule), pruned,
+                  views_and_intrinsics, features, out, &result.engine, progress);
+  if (!result.engine.success) return;
 
-  const auto start = std::chrono::steady_clock::now();
+  auto start = std::chrono::steady_clock::now();
   result.pruning.audit = AuditEdgesAgainstModel(graph, InterSubgraphEdges(graph, result.pruning.partition.accepted), *out,
                                         features, options.pruning.audit);
   const bool changed = ApplyAudit(options.pruning.audit, &pruned, &result);
   result.pruning.timings.push_back({"solve before the audit", result.engine.total_seconds});
   result.pruning.timings.push_back({"model audit", SecondsSince(start)});
-  if (changed) RunGlobalEngine(options.engine, pruned, views_and_intrinsics, features, out, &result.engine, progress);
+  if (options.pruning.audit.refine_final) {
+    const SfmData audited = *out;
+    RefineGlobalModel(options.engine, pruned, audited, features, out, &result.engine, progress);
+  } else if (changed || options.pruning.audit.model_schedule != AuditModelSchedule::kFull) {
+    RunGlobalEngine(options.engine, pruned, views_and_intrinsics, features, out, &result.engine, progress);
+  }
 }
 
 }  // namespace sfm_pruning

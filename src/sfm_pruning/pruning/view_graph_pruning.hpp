@@ -18,9 +18,11 @@
 // Edges inside an accepted subgraph are never touched.
 //
 // RunPrunedGlobalEngine (GLOBAL_PRUNED) = PruneViewGraph on a copy of the graph, then
-// RunGlobalEngine on the pruned graph (which keeps its largest component); with the audit
-// (model_edge_audit.hpp), the inter-subgraph edges are then judged against that model, removed ones
-// that it transfers re-admitted and kept ones it does not removed, and the graph solved again.
+// RunGlobalEngine on the pruned graph (which keeps its largest component). With the audit
+// (model_edge_audit.hpp) that solve runs the audit's lighter schedule, the inter-subgraph edges are
+// judged against its model, removed ones that it transfers re-admitted and kept ones it does not
+// removed, and the audited graph is adjusted from that model's poses (RefineGlobalModel) or solved
+// again (ModelEdgeAuditOptions::model_schedule, refine_final).
 #pragma once
 
 #include <string>

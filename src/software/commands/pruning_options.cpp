@@ -9,6 +9,25 @@
 
 namespace prunesfm {
 
+namespace {
+
+const std::map<std::string, sfm_pruning::AuditModelSchedule>& AuditModelNames() {
+  using AuditModelSchedule = sfm_pruning::AuditModelSchedule;
+  static const std::map<std::string, AuditModelSchedule> names{{"positioned", AuditModelSchedule::kPositioning},
+                                                                {"adjusted", AuditModelSchedule::kLightAdjustment},
+                                                                {"full", AuditModelSchedule::kFull}};
+  return names;
+}
+
+}  // namespace
+
+std::string AuditModelName(sfm_pruning::AuditModelSchedule schedule) {
+  for (const auto& [name, value] : AuditModelNames()) {
+    if (value == schedule) return name;
+  }
+  return "";
+}
+
 void AddPruningOptions(CLI::App* cmd, sfm_pruning::ViewGraphPruningOptions* options, bool final_solve) {
   CLI::App* group = cmd->add_option_group("Pruning", "View-graph pruning (GLOBAL_PRUNED, prune); paper values");
   sfm_pruning::RecursivePartitionOptions& partition = options->partition;
@@ -143,7 +162,18 @@ void AddPruningOptions(CLI::App* cmd, sfm_pruning::ViewGraphPruningOptions* opti
     group->add_option("--prune_model_audit", audit.enabled,
                       "GLOBAL_PRUNED: judge the edges between subgraphs against the model solved from the pruned "
                       "graph (re-admit removed edges whose matches it transfers, remove kept ones it does not), "
-                      "then solve again")
+                      "then adjust the audited graph from that model")
+        ->capture_default_str();
+    group->add_option("--prune_audit_model", audit.model_schedule,
+                      "Model audit: the solve it judges from. positioned: rotation averaging and positioning; "
+                      "adjusted: + one bundle adjustment on a subset of the landmarks; full: the final solve's "
+                      "schedule")
+        ->transform(CLI::CheckedTransformer(
+AuditModelNames(), CLI::ignore_case))
+        ->default_str("adjusted");
+    group->add_option("--prune_audit_refine_final", audit.refine_final,
+                      "Model audit: the final solve starts from the audited model's poses (its tracks "
+                      "re-triangulated, then adjusted) instead of solving the audited graph from scratch")
         ->capture_default_str();
     group->add_option("--prune_audit_max_error_px", audit.max_transfer_error_px,
                       "Model audit: a match agrees when its landmark projects within this many pixels of the other "

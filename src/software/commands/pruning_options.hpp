@@ -3,6 +3,8 @@
 // and each consistency test on/off, with the paper's values as defaults (METHOD.md §3–4).
 #pragma once
 
+#include <string>
+
 #include "sfm_pruning/pruning/view_graph_pruning.hpp"
 
 namespace CLI {
@@ -15,5 +17,8 @@ namespace prunesfm {
 // `final_solve`: the subcommand solves the pruned graph (run, reconstruct), so the options of the
 // model audit apply; `prune` only writes the pruned database and does not offer them.
 void AddPruningOptions(CLI::App* cmd, sfm_pruning::ViewGraphPruningOptions* options, bool final_solve);
+
+// The --prune_audit_model name of a schedule (for the run's record of its settings).
+std::string AuditModelName(sfm_pruning::AuditModelSchedule schedule);
 
 }  // namespace prunesfm

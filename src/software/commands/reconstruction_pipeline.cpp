@@ -23,6 +23,7 @@
 #include "software/cli_support.hpp"
 #include "software/commands/front_end_stages.hpp"
 #include "software/commands/pruning_options.hpp"
+#include "software/commands/pruning_options.hpp"
 #include "software/commands/pruning_report_json.hpp"
 
 namespace prunesfm {
@@ -141,11 +142,14 @@ nlohmann::json TimingsJson(const EngineSettings& settings, const sfm_pruning::Vi
   json["positioning"] = settings.positioning;
   json["positioning_tracks"] = settings.positioning_tracks;
   json["positioning_random_starts"] = settings.positioning_random_starts;
+  json["positioning_start_screening"] = settings.positioning_start_screening;
   json["max_epipolar_error_deg"] = settings.max_epipolar_error_deg;
   json["verification_precision_ratio"] = settings.verification_precision_ratio;
   if (settings.engine == "GLOBAL_PRUNED") {
     json["prune_distinctive_witness"] = settings.pruning.alignment.distinctive_witness_ratio;
     json["prune_model_audit"] = settings.pruning.audit.enabled;
+    json["prune_audit_model"] = AuditModelName(settings.pruning.audit.model_schedule);
+    json["prune_audit_refine_final"] = settings.pruning.audit.refine_final;
     json["prune_unverified_max_rotation_deg"] = settings.pruning.unverified_rotation.max_median_error_deg;
     json["prune_landmark_check_deg"] = settings.pruning.landmark_check.max_angle_deg;
     json["prune_ransac_enumerate_max"] = settings.pruning.alignment.max_enumerated_samples;
@@ -246,6 +250,7 @@ sfm_pruning::PrunedGlobalEngineOptions PrunedEngineOptions(const EngineSettings&
   // The final solve only: the per-community solves are many and small, and the consistency tests
   // already judge each of them.
   options.engine.positioning_random_starts = settings.positioning_random_starts;
+  options.engine.positioning_start_screening_iterations = settings.positioning_start_screening;
   options.SetSeedAndThreads(settings.seed, settings.num_threads);
   return options;
 }
@@ -272,6 +277,11 @@ void AddSolverOptions(CLI::App* cmd, EngineSettings* settings) {
                   "Random starts of the positioning solve (GLOBAL_PRUNED: of its final solve); the solution "
                   "that agrees with the most observation rays is kept (1: a single start, as GLOMAP)")
       ->check(CLI::Range(1, 1000))
+      ->capture_default_str();
+  cmd->add_option("--positioning_start_screening", settings->positioning_start_screening,
+                  "With several random starts: solve each for this many iterations only, keep the one that "
+                  "agrees with the most rays, and solve only that one to the end (0: every start to the end)")
+      ->check(NonNegativeValue())
       ->capture_default_str();
   AddVerificationOptions(cmd, &settings->max_epipolar_error_deg, &settings->verification_precision_ratio);
   // Translation averaging builds its tracks after the solve, from the solved cameras: the option
@@ -316,6 +326,7 @@ Solution Solve(const EngineSettings& settings, const ReconstructionInput& input,
     options.positioning = Positioning(settings);
     options.positioning_tracks = PositioningTracks(settings);
     options.positioning_random_starts = settings.positioning_random_starts;
+    options.positioning_start_screening_iterations = settings.positioning_start_screening;
     options.bundle = bundle;
     if (schedule == Schedule::kFocalSearch) options = sfm_pruning::WithFocalSearchSchedule(options);
     RunGlobalEngine(options, graph, scene, input.features, &solution.model, &solution.report, TerminalProgressBar());

@@ -28,15 +28,16 @@ struct EngineSettings {
   std::string positioning = "GLOMAP";  // or TRANSLATION_AVERAGING
   std::string positioning_tracks = "CONNECTED";  // or MATCH_STARS
   int positioning_random_starts = 1;  // GlobalEngineOptions::positioning_random_starts
+  int positioning_start_screening = 0;  // GlobalEngineOptions::positioning_start_screening_iterations
   double max_epipolar_error_deg = 0.25;  // RelativePoseOptions::max_angular_error_deg
   double verification_precision_ratio = 0.0;  // RelativePoseOptions::precision_check_ratio
   sfm_pruning::ViewGraphPruningOptions pruning;  // GLOBAL_PRUNED and `prune`
   IntrinsicsSettings intrinsics;                 // reconstruct and run
 };
 
-// Adds --seed, --num_threads, --positioning, --positioning_tracks, --positioning_random_starts and
-// the verification options
-// (--max_epipolar_error_deg, --verification_precision_ratio) to `cmd`.
+// Adds --seed, --num_threads, --positioning, --positioning_tracks, --positioning_random_starts,
+// --positioning_start_screening and the verification options (--max_epipolar_error_deg,
+// --verification_precision_ratio) to `cmd`.
 void AddSolverOptions(CLI::App* cmd, EngineSettings* settings);
 
 // Adds --engine, the solver options, the intrinsics options (intrinsics_options.hpp) and the
