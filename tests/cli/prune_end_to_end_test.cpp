@@ -131,9 +131,10 @@ nlohmann::json PruneOrbitReport(const std::string& scratch_name, const std::vect
 }
 
 TEST(CliPruneEndToEnd, ReportListsEachViolationOfAnInconsistentCommunity) {
-  // Weighted by raw inliers, Louvain groups views of the twin faces, and that community fails.
-  const nlohmann::json report =
-      PruneOrbitReport("cli_prune_violations", {"--seed", "5", "--prune_partition_weight", "inliers"});
+  // Weighted by raw inliers, Louvain groups views of the twin faces, and that community fails the
+  // paper's angle tests (the baseline-ratio test, listed as factors, is the next test's).
+  const nlohmann::json report = PruneOrbitReport(
+      "cli_prune_violations", {"--seed", "5", "--prune_partition_weight", "inliers", "--prune_baseline_ratio_factor", "0"});
   size_t listed = 0;
   for (const nlohmann::json& node : report.at("tree")) {
     if (!node.contains("violation_list")) continue;

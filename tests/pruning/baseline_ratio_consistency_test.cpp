@@ -69,12 +69,13 @@ TEST(BaselineRatios, ACameraMovedAlongItsBaselineFailsEveryTripletThroughIt) {
   EXPECT_TRUE(found_at_view_0);
 }
 
-TEST(BaselineRatios, OffByDefaultAndSilentOnARightSolution) {
+TEST(BaselineRatios, OffAtZeroAndSilentOnARightSolution) {
   const PruningTestScene scene = FullyConnectedScene();
   SubgraphSolution solution = scene.Solution({0, 1, 2, 3}, RandomSimilarity(8, 0.3));
   ConsistencyReport report;
   ConsistencyTestOptions options;
-  EXPECT_DOUBLE_EQ(options.max_baseline_ratio_factor, 0.0);
+  EXPECT_DOUBLE_EQ(options.max_baseline_ratio_factor, 1.25);  // on by default
+  options.max_baseline_ratio_factor = 0.0;
   solution.poses.at(3).center *= 2.0;  // wrong, but the test is off
   TestBaselineRatios(scene.graph, solution, scene.views_and_intrinsics, scene.features, options, &report);
   EXPECT_TRUE(report.consistent);

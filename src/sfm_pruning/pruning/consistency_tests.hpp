@@ -40,9 +40,9 @@ struct ConsistencyTestOptions {
   // undefined (coincident centres in the solution, or an edge without translation).
   double min_translation_norm = 1e-12;
   // (c) baseline ratios (not in the paper; baseline_ratio_consistency.hpp): a triplet violates
-  // when its measured and implied ratios differ by more than this factor; 0 = off (default).
+  // when its measured and implied ratios differ by more than this factor; 0 = off (the paper).
   // Needs the views' features, so TestBaselineRatios runs it, not TestSubgraphConsistency.
-  double max_baseline_ratio_factor = 0.0;
+  double max_baseline_ratio_factor = 1.25;
   BaselineRatioOptions baseline_ratio;
 };
 

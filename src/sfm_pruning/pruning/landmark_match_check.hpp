@@ -35,7 +35,7 @@ namespace sfm_pruning {
 struct LandmarkMatchCheckOptions {
   // A match is dropped when a landmark of one side, carried into the other subgraph's frame, is
   // more than this many degrees off the ray of the other side's feature; 0 = off (the paper).
-  double max_angle_deg = 0.0;
+  double max_angle_deg = 5.0;
   // An edge left with fewer matches is removed (its relative pose came from the dropped ones).
   size_t min_matches = 5;
   // Edges of pairs without a frame transform (too few edges to vote, no supported hypothesis):

@@ -29,12 +29,13 @@ namespace sfm_pruning {
 // How far the solve before the audit goes.
 enum class AuditModelSchedule {
   kPositioning,       // rotation averaging and positioning only
-  kLightAdjustment,   // + one adjustment on a subset of the landmarks (the others re-triangulated)
+  kLightAdjustment,   // + one adjustment on a subset of the landmarks (the others re-triangulated),
+                      //   with the iteration cap and tolerance of the rounds before the final one
   kFull,              // the final solve's schedule
 };
 
 struct ModelEdgeAuditOptions {
-  bool enabled = false;
+  bool enabled = true;
   double max_transfer_error_px = 8.0;
   // An edge with fewer matches on landmarks of the model is not judged (left as the pruning decided).
   size_t min_transferred_matches = 10;

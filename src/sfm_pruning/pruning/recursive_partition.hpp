@@ -56,7 +56,7 @@ struct RecursivePartitionOptions {
   // the thin run's {10-13} holds the twin-dominated edge 10-13, fails the translation test and was
   // accepted as unsplittable; bisected, the inter-subgraph pruning judges that edge
   // (docs/pruning.md).
-  bool bisect_unsplittable = false;
+  bool bisect_unsplittable = true;
 };
 
 enum class SubgraphStatus {

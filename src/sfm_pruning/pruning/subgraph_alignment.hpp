@@ -106,10 +106,10 @@ struct SubgraphAlignmentOptions {
   // consensus leaves e* out and its edges' distinctive share is below distinctive_witness_ratio
   // times that of e*'s candidate, the latter decides the pair; and when no sample gives a
   // hypothesis any edge supports, e*'s decides before the rotation-only fallback. 0: off (the
-  // default until every benchmark table is rerun with it; measured in docs/pruning.md, "The most
-  // distinctive edge as a witness": the street with stars and a 0.08° verification 52.2 -> 90.5
-  // AUC@10, the other synthetic and real scenes within 0.6).
-  double distinctive_witness_ratio = 0.0;
+  // paper). Measured in docs/pruning.md, "The most distinctive edge as a witness": the street with
+  // stars and a 0.08° verification 52.2 -> 90.5 AUC@10, the other synthetic and real scenes within
+  // 0.6; part of the default repetition configuration since session 29.
+  double distinctive_witness_ratio = 0.5;
 
   // Pairs with fewer voting edges than this are not tested by RANSAC (the paper is silent).
   // With 1–2 votes there is no majority to tell the wrong edge from the right one.

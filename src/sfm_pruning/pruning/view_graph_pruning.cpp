@@ -407,7 +407,12 @@ bool ApplyAudit(const ModelEdgeAuditOptions& options, ViewGraph* pruned, PrunedG
 GlobalEngineOptions AuditModelOptions(const GlobalEngineOptions& final_solve, AuditModelSchedule schedule) {
   GlobalEngineOptions options = final_solve;
   if (schedule == AuditModelSchedule::kPositioning) options.bundle_adjust = false;
-  if (schedule == AuditModelSchedule::kLightAdjustment) options.num_bundle_rounds = 0;
+  if (schedule == AuditModelSchedule::kLightAdjustment) {
+    // One adjustment, stopped as the rounds before the final one are: the audit asks for pixels.
+    options.num_bundle_rounds = 0;
+    options.final_function_tolerance = options.intermediate_function_tolerance;
+    options.bundle.max_num_iterations = options.intermediate_max_num_iterations;
+  }
   return options;
 }
 
@@ -436,8 +441,13 @@ void RunPrunedGlobalEngine(const PrunedGlobalEngineOptions& options, const ViewG
   result.pruning.timings.push_back({"solve before the audit", result.engine.total_seconds});
   result.pruning.timings.push_back({"model audit", SecondsSince(start)});
   if (options.pruning.audit.refine_final) {
+    // An adjusted audit model has had the first of the final solve's adjustment rounds.
+    GlobalEngineOptions refine = options.engine;
+    if (options.pruning.audit.model_schedule != AuditModelSchedule::kPositioning) {
+      refine.num_bundle_rounds = std::max(refine.num_bundle_rounds - 1, 0);
+    }
     const SfmData audited = *out;
-    RefineGlobalModel(options.engine, pruned, audited, features, out, &result.engine, progress);
+    RefineGlobalModel(refine, pruned, audited, features, out, &result.engine, progress);
   } else if (changed || options.pruning.audit.model_schedule != AuditModelSchedule::kFull) {
     RunGlobalEngine(options.engine, pruned, views_and_intrinsics, features, out, &result.engine, progress);
   }

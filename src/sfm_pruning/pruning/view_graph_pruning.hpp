@@ -63,14 +63,14 @@ struct ViewGraphPruningOptions {
   PairTrustMeasure link_trust = PairTrustMeasure::kDistinctiveShare;
   // kDistinctiveShare of a pair whose RANSAC kept k edges, pulled toward the share of all its
   // connecting edges as if m of them had been kept too: (k·kept + m·all) / (k + m). 0 = off (the
-  // default). Why: the witness may keep a pair's single most distinctive edge, and the share of
+  // paper ranks no pairs). Why: the witness may keep a pair's single most distinctive edge, and the share of
   // one edge chosen for being the most distinctive outranks a true consensus of many (street,
   // seed 7, street configuration: a pair with no true edge, 0.70, above a 28-edge true one, 0.61;
   // docs/pruning.md).
-  double trust_prior_edges = 0.0;
+  double trust_prior_edges = 2.0;
   int num_threads = 1;  // subgraph pairs aligned in parallel (the result does not depend on it)
-  // The pruning's decisions reviewed against the model solved from the pruned graph, then solved
-  // again (off by default; applied by RunPrunedGlobalEngine, not PruneViewGraph).
+  // The pruning's decisions reviewed against the model solved from the pruned graph, then adjusted
+  // again (on by default, not in the paper; applied by RunPrunedGlobalEngine, not PruneViewGraph).
   ModelEdgeAuditOptions audit;
   // The pairs the trusted forest keeps unverified, judged by rotation against the rest of the pruned
   // graph (unverified_pair_rotations.hpp; off when max_median_error_deg is 0), averaged with the

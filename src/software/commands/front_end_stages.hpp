@@ -49,7 +49,7 @@ struct MatchSettings {
   int flann_checks = 64;
   uint64_t seed = 0;
   double max_epipolar_error_deg = 0.25;  // the verification's inlier threshold
-  double verification_precision_ratio = 0.0;  // RelativePoseOptions::precision_check_ratio
+  double verification_precision_ratio = 0.5;  // RelativePoseOptions::precision_check_ratio
 };
 
 // --max_epipolar_error_deg, the verification's inlier threshold, and --verification_precision_ratio

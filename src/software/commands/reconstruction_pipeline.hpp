@@ -27,10 +27,12 @@ struct EngineSettings {
   int num_threads = 1;
   std::string positioning = "GLOMAP";  // or TRANSLATION_AVERAGING
   std::string positioning_tracks = "CONNECTED";  // or MATCH_STARS
-  int positioning_random_starts = 1;  // GlobalEngineOptions::positioning_random_starts
-  int positioning_start_screening = 0;  // GlobalEngineOptions::positioning_start_screening_iterations
+  // The command line's defaults (the library's: 1 start, as GLOMAP): three starts, each screened
+  // for 25 iterations (docs/global.md, "Random starts").
+  int positioning_random_starts = 3;  // GlobalEngineOptions::positioning_random_starts
+  int positioning_start_screening = 25;  // GlobalEngineOptions::positioning_start_screening_iterations
   double max_epipolar_error_deg = 0.25;  // RelativePoseOptions::max_angular_error_deg
-  double verification_precision_ratio = 0.0;  // RelativePoseOptions::precision_check_ratio
+  double verification_precision_ratio = 0.5;  // RelativePoseOptions::precision_check_ratio
   sfm_pruning::ViewGraphPruningOptions pruning;  // GLOBAL_PRUNED and `prune`
   IntrinsicsSettings intrinsics;                 // reconstruct and run
 };
