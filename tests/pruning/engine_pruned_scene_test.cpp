@@ -76,6 +76,12 @@ TEST(EnginePrunedScene, CleanSceneIsNotHarmed) {
   for (const StageTiming& timing : run.pruned.pruning.timings) phases.push_back(timing.stage);
   EXPECT_EQ(phases, (std::vector<std::string>{"subgraph partition", "inter-subgraph pruning",
                                               "landmark check of matches", "solve before the audit", "model audit"}));
+  // The final solve adjusts the audited model: no rotation averaging or positioning again, and one
+  // adjustment round fewer than a solve from scratch (the audit's adjustment was the first).
+  ASSERT_EQ(run.pruned.engine.timings.size(), 3u);
+  EXPECT_EQ(run.pruned.engine.timings[1].stage, "triangulation from the poses");
+  EXPECT_EQ(run.pruned.engine.bundle_adjustments.size(),
+            static_cast<size_t>(GlobalEngineOptions().num_bundle_rounds));
   for (const RemovedEdge& removed : run.pruned.pruning.removed_edges) {
     EXPECT_FALSE(run.pruned.pruning.partition.accepted.empty());
     EXPECT_NE(removed.invalidation.reason, EdgeInvalidReason::kNone);
@@ -89,6 +95,21 @@ TEST(EnginePrunedScene, CleanSceneIsNotHarmed) {
             << run.pruned.pruning.removed_edges.size() << " of " << run.pruned.pruning.num_input_edges << " edges, "
             << run.pruned.pruning.partition.accepted.size() << " subgraphs\n";
   EXPECT_GE(pruned_auc, global_auc - 1.0);
+}
+
+TEST(EnginePrunedScene, AFullAuditSolveThatChangesNothingIsTheFinalSolve) {
+  const SyntheticScene& scene = CleanScene();
+  PrunedGlobalEngineOptions options;
+  options.pruning.audit.model_schedule = AuditModelSchedule::kFull;
+  options.pruning.audit.refine_final = false;
+  const Comparison run = CompareEngines(scene, options);
+  ASSERT_TRUE(run.pruned.engine.success) << run.pruned.engine.message;
+  EXPECT_FALSE(run.pruned.pruning.audit.empty());
+  EXPECT_EQ(run.pruned.pruning.audit_readmitted + run.pruned.pruning.audit_removed, 0u);
+  // No second solve: the report is the audit's own full solve.
+  EXPECT_EQ(run.pruned.engine.timings.front().stage, "rotation averaging");
+  EXPECT_EQ(run.pruned.engine.bundle_adjustments.size(), static_cast<size_t>(options.engine.num_bundle_rounds) + 1);
+  EXPECT_GE(AucAt(run.pruned_eval, 3.0), AucAt(run.global_eval, 3.0) - 1.0);
 }
 
 TEST(EnginePrunedScene, SinglePassAcceptsEveryCommunityOfTheRoot) {
