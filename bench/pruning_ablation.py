@@ -63,6 +63,25 @@ CONFIGS = [
      ["--prune_relative_coverage_break_even", "0"]),
     ("RANSAC sample cap 4 (before session 14)", "GLOBAL_PRUNED", ["--prune_max_sample_size", "4"]),
     ("with a refit of the RANSAC winner (3 rounds)", "GLOBAL_PRUNED", ["--prune_refine_rounds", "3"]),
+] + [
+    # The additions that session 29 made the defaults (docs/pruning.md), each taken away alone.
+    (f"without {what} (session 29)", "GLOBAL_PRUNED", off) for what, off in [
+        ("the precise verification", ["--verification_precision_ratio", "0"]),
+        ("the extra positioning starts", ["--positioning_random_starts", "1"]),
+        ("the distinctive witness", ["--prune_distinctive_witness", "0"]),
+        ("the model audit", ["--prune_model_audit", "false"]),
+        ("bisection of unsplittable communities", ["--prune_bisect_unsplittable", "false"]),
+        ("the baseline-ratio test", ["--prune_baseline_ratio_factor", "0"]),
+        ("the trust prior", ["--prune_trust_prior_edges", "0"]),
+        ("the landmark check", ["--prune_landmark_check_deg", "0"]),
+    ]
+] + [
+    ("the audit's full solves (session 28)", "GLOBAL_PRUNED",
+     ["--prune_audit_model", "full", "--prune_audit_refine_final", "false"]),
+    ("the defaults before session 29", "GLOBAL_PRUNED",
+     ["--verification_precision_ratio", "0", "--positioning_random_starts", "1", "--prune_distinctive_witness", "0",
+      "--prune_model_audit", "false", "--prune_bisect_unsplittable", "false", "--prune_baseline_ratio_factor", "0",
+      "--prune_trust_prior_edges", "0", "--prune_landmark_check_deg", "0"]),
 ]
 
 
@@ -108,7 +127,8 @@ def main():
         database, gt, images = scene_dir / "database.db", scene_dir / "ground_truth" / "gt_cameras.txt", None
     if not database.is_file() or not gt.exists():
         sys.exit(f"pruning_ablation: {database} or {gt} missing (run bench/run_benchmarks.py --prepare_only)")
-    lines = bs.header_lines(f"Pruning ablation on `{args.scene}` (the paper's Table)", sys.argv, prunesfm)
+    kind = "photos" if args.database else "synthetic"
+    lines = bs.header_lines(f"Pruning ablation on `{args.scene}`, {kind} (the paper's Table)", sys.argv, prunesfm)
     rows = [run_config(args, prunesfm, database, gt, images, label, engine, extra, k)
             for k, (label, engine, extra) in enumerate(CONFIGS)]
     lines += ["`prunesfm run --engine E --seed {} --num_threads {}` on `{}` with the arguments shown; "
