@@ -247,8 +247,8 @@ sfm_pruning::PrunedGlobalEngineOptions PrunedEngineOptions(const EngineSettings&
   options.pruning.partition.engine.positioning = Positioning(settings);
   options.engine.positioning_tracks = PositioningTracks(settings);
   options.pruning.partition.engine.positioning_tracks = PositioningTracks(settings);
-  // The final solve only: the per-community solves are many and small, and the consistency tests
-  // already judge each of them.
+  // The solve of the pruned graph only (the audit's, whose poses the final adjustment keeps): the
+  // per-community solves are many and small, and the consistency tests already judge each of them.
   options.engine.positioning_random_starts = settings.positioning_random_starts;
   options.engine.positioning_start_screening_iterations = settings.positioning_start_screening;
   options.SetSeedAndThreads(settings.seed, settings.num_threads);
@@ -274,8 +274,8 @@ void AddSolverOptions(CLI::App* cmd, EngineSettings* settings) {
       ->check(CLI::IsMember({"CONNECTED", "MATCH_STARS"}))
       ->capture_default_str();
   cmd->add_option("--positioning_random_starts", settings->positioning_random_starts,
-                  "Random starts of the positioning solve (GLOBAL_PRUNED: of its final solve); the solution "
-                  "that agrees with the most observation rays is kept (1: a single start, as GLOMAP)")
+                  "Random starts of the positioning solve (GLOBAL_PRUNED: of its solve of the pruned graph); the "
+                  "solution that agrees with the most observation rays is kept (1: a single start, as GLOMAP)")
       ->check(CLI::Range(1, 1000))
       ->capture_default_str();
   cmd->add_option("--positioning_start_screening", settings->positioning_start_screening,
