@@ -434,7 +434,7 @@ void RunPrunedGlobalEngine(const PrunedGlobalEngineOptions& options, const ViewG
                   views_and_intrinsics, features, out, &result.engine, progress);
   if (!result.engine.success) return;
 
-  auto start = std::chrono::steady_clock::now();
+  const auto start = std::chrono::steady_clock::now();
   result.pruning.audit = AuditEdgesAgainstModel(graph, InterSubgraphEdges(graph, result.pruning.partition.accepted), *out,
                                         features, options.pruning.audit);
   const bool changed = ApplyAudit(options.pruning.audit, &pruned, &result);
@@ -446,7 +446,7 @@ void RunPrunedGlobalEngine(const PrunedGlobalEngineOptions& options, const ViewG
     if (options.pruning.audit.model_schedule != AuditModelSchedule::kPositioning) {
       refine.num_bundle_rounds = std::max(refine.num_bundle_rounds - 1, 0);
     }
-    const SfmData audited = *out;
+    const SfmData audited = std::move(*out);  // RefineGlobalModel resets *out from it
     RefineGlobalModel(refine, pruned, audited, features, out, &result.engine, progress);
   } else if (changed || options.pruning.audit.model_schedule != AuditModelSchedule::kFull) {
     RunGlobalEngine(options.engine, pruned, views_and_intrinsics, features, out, &result.engine, progress);
