@@ -1,6 +1,7 @@
 // prunesfm synth: the written project reads back as the scene the library generates.
 #include <gtest/gtest.h>
 
+#include <fstream>
 #include <map>
 #include <sstream>
 #include <string>
@@ -129,6 +130,25 @@ TEST(CliSynth, BadOptionGivesOneLineAndNoOutput) {
   EXPECT_EQ(CountLines(result.err), 1) << result.err;
   EXPECT_NE(result.err.find("outlier_ratio"), std::string::npos) << result.err;
   EXPECT_FALSE(std::filesystem::exists(dir));
+}
+
+TEST(CliSynth, FamilySceneRecordsItsDrawsAndRefusesDrawnOptions) {
+  const std::filesystem::path dir = ScratchDir("cli_synth_family");
+  const CommandResult written = RunPrunesfm({"synth", "--scene", "family_object", "--seed", "3", "--num_views", "8",
+                                             "--point_density_scale", "0.3", "--output", (dir / "object").string()});
+  ASSERT_EQ(written.exit_code, 0) << written.err;
+  std::ifstream summary(dir / "object" / "ground_truth" / "synthetic_scene.json");
+  std::stringstream text;
+  text << summary.rdbuf();
+  EXPECT_NE(text.str().find("\"family\""), std::string::npos);
+  EXPECT_NE(text.str().find("\"unique_share\""), std::string::npos);
+
+  const CommandResult refused = RunPrunesfm({"synth", "--scene", "family_object", "--noise_px", "1", "--output",
+                                             (dir / "refused").string()});
+  EXPECT_NE(refused.exit_code, 0);
+  EXPECT_NE(refused.err.find("--noise_px"), std::string::npos) << refused.err;
+  EXPECT_EQ(CountLines(refused.err), 1) << refused.err;
+  EXPECT_FALSE(std::filesystem::exists(dir / "refused"));
 }
 
 }  // namespace

@@ -26,10 +26,6 @@ constexpr double kRadiusJitterM = 0.5;
 constexpr double kAngleJitterDeg = 2.0;
 constexpr double kHeadingJitterDeg = 8.0;
 
-Eigen::Vector3d RotateAboutZ(const Eigen::Vector3d& v, double angle) {
-  return Eigen::AngleAxisd(angle, Eigen::Vector3d::UnitZ()) * v;
-}
-
 }  // namespace
 
 SceneLayout BuildCourtyardLayout(const SyntheticSceneOptions& options, std::mt19937_64& rng) {

@@ -35,6 +35,26 @@ void PlaceTexture(const Texture& texture, const Eigen::Vector3d& origin, const E
   }
 }
 
+void PlaceTextureOnCylinder(const Texture& texture, const Eigen::Vector3d& base, double radius_m,
+                            double start_angle, bool outward, SceneLayout* layout) {
+  for (size_t k = 0; k < texture.uvw.size(); ++k) {
+    const Eigen::Vector3d& p = texture.uvw[k];
+    // Seen from inside, u runs clockwise so that the print is not mirrored for the viewer.
+    const double angle = start_angle + (outward ? 1.0 : -1.0) * p.x() / radius_m;
+    const Eigen::Vector3d radial(std::cos(angle), std::sin(angle), 0.0);
+    const double r = radius_m + (outward ? p.z() : -p.z());
+    SurfacePoint point;
+    point.X = base + r * radial + p.y() * Eigen::Vector3d::UnitZ();
+    point.normal = outward ? radial : Eigen::Vector3d(-radial);
+    point.appearance = texture.appearance[k];
+    layout->points.push_back(point);
+  }
+}
+
+Eigen::Vector3d RotateAboutZ(const Eigen::Vector3d& v, double angle) {
+  return Eigen::AngleAxisd(angle, Eigen::Vector3d::UnitZ()) * v;
+}
+
 Pose LookAtPose(const Eigen::Vector3d& center, const Eigen::Vector3d& target) {
   const Eigen::Vector3d forward = (target - center).normalized();
   // Camera axes: x right, y down, z forward. With world z up, right = forward x up.

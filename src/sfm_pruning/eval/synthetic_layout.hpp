@@ -32,6 +32,7 @@ struct SceneLayout {
   std::vector<SurfacePoint> points;  // landmark id = index
   IndexT num_appearances = 0;
   PairSelection pairs = PairSelection::kExhaustive;
+  SceneDescription description;  // a family scene's drawn geometry
 };
 
 // A texture: points on a plane patch, in patch coordinates (u, v along the patch, w = relief
@@ -54,6 +55,15 @@ Texture MakeTexture(double width_m, double height_m, double density_per_m2, doub
 // towards the cameras that should see the surface.
 void PlaceTexture(const Texture& texture, const Eigen::Vector3d& origin, const Eigen::Vector3d& u_axis,
                   const Eigen::Vector3d& v_axis, SceneLayout* layout);
+
+// Wraps the texture round a vertical cylinder: u runs along the circumference (arc length,
+// counter-clockwise seen from above, starting at `start_angle` radians from +x), v up from
+// `base`, w outward. Normals point outward (the cylinder is seen from outside) or inward.
+void PlaceTextureOnCylinder(const Texture& texture, const Eigen::Vector3d& base, double radius_m,
+                            double start_angle, bool outward, SceneLayout* layout);
+
+// `v` turned by `angle` radians about the world's vertical axis.
+Eigen::Vector3d RotateAboutZ(const Eigen::Vector3d& v, double angle);
 
 // A camera at `center` looking at `target`, with image +y pointing down along world -z (z up).
 Pose LookAtPose(const Eigen::Vector3d& center, const Eigen::Vector3d& target);

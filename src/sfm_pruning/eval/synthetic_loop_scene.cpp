@@ -27,8 +27,6 @@ constexpr double kPitchDeg = -5.0;
 constexpr double kHeadingJitterDeg = 10.0;
 constexpr double kLaneJitterM = 0.3;
 constexpr double kLapLaneOffsetM = 0.8;     // each lap drives a slightly different lane
-// Stadium shape: straights three times as long as the radius of the end arcs.
-constexpr double kStraightPerRadius = 3.0;
 
 // A stadium centred at the origin, traversed counter-clockwise starting at the beginning of the
 // bottom straight, parametrised by arc length.
@@ -69,8 +67,9 @@ SceneLayout BuildLoopLayout(const SyntheticSceneOptions& options, std::mt19937_6
   const Eigen::Vector3d z = Eigen::Vector3d::UnitZ();
   const int views_per_lap = (options.num_views + options.laps - 1) / options.laps;
   const double perimeter = views_per_lap * kStepM;
-  const double radius = perimeter / (2 * kStraightPerRadius + 2 * M_PI);
-  const Stadium path{kStraightPerRadius * radius, radius};
+  const double straight_per_radius = options.loop_straight_per_radius;
+  const double radius = perimeter / (2 * straight_per_radius + 2 * M_PI);
+  const Stadium path{straight_per_radius * radius, radius};
   const Stadium wall_line{path.straight, radius + kWallDistanceM};
 
   // Wall segments: chords of the wall line, all of (almost) the same length.

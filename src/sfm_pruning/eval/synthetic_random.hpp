@@ -15,6 +15,7 @@ enum class SyntheticStream : uint64_t {
   kAppearance = 2,  // base descriptors
   kView = 3,        // per-view pixel noise, descriptor noise, dropout, clutter
   kPair = 4,        // per-pair injected wrong matches
+  kParameters = 5,  // a family scene's drawn parameters (a: what is drawn, b: the family)
 };
 
 // SplitMix64 finaliser: a bijective mix whose outputs for consecutive inputs are uncorrelated.

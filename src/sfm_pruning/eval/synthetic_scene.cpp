@@ -6,6 +6,7 @@
 #include <thread>
 #include <utility>
 
+#include "sfm_pruning/eval/synthetic_families.hpp"
 #include "sfm_pruning/eval/synthetic_layout.hpp"
 #include "sfm_pruning/eval/synthetic_matching.hpp"
 #include "sfm_pruning/eval/synthetic_observations.hpp"
@@ -31,13 +32,14 @@ void Require(bool condition, const std::string& problem) {
   if (!condition) throw Error("synthetic scene: " + problem);
 }
 
-SyntheticSceneOptions ResolveDefaults(SyntheticSceneOptions o) {
+SyntheticSceneOptions ResolveDefaults(SyntheticSceneOptions o, SceneDescription* description) {
   const std::vector<std::string> names = SyntheticSceneNames();
   if (std::find(names.begin(), names.end(), o.scene) == names.end()) {
     std::string list;
     for (const std::string& name : names) list += (list.empty() ? "" : ", ") + name;
     throw Error("synthetic scene: unknown scene '" + o.scene + "' (expected one of: " + list + ")");
   }
+  if (IsSyntheticFamily(o.scene)) DrawFamilyCapture(&o, description);
   const bool large = IsLarge(o.scene);
   if (o.num_views == 0) {
     if (large) o.num_views = 2000;
@@ -54,10 +56,12 @@ SyntheticSceneOptions ResolveDefaults(SyntheticSceneOptions o) {
   if (o.loop_min_gap == 0) o.loop_min_gap = 50;
   if (o.laps == 0) o.laps = 2;
   if (o.twin_fraction < 0.0) o.twin_fraction = 0.25;
+  if (o.loop_straight_per_radius == 0.0) o.loop_straight_per_radius = 3.0;
   if (o.num_threads == 0) o.num_threads = 1;
 
   Require(o.num_views >= 2, "num_views must be at least 2");
-  Require(!large || o.num_views >= 4 * o.laps, "sequential_large needs at least 4 views per lap");
+  Require(!(large || o.scene == "family_loop") || o.num_views >= 4 * o.laps,
+          o.scene + " needs at least 4 views per lap");
   Require(o.focal_px > 0.0, "focal_px must be positive");
   Require(o.noise_px >= 0.0, "noise_px must be >= 0");
   Require(o.descriptor_noise >= 0.0, "descriptor_noise must be >= 0");
@@ -72,6 +76,8 @@ SyntheticSceneOptions ResolveDefaults(SyntheticSceneOptions o) {
   Require(o.sequential_window > 0 && o.loop_candidates >= 0 && o.loop_min_gap > 0,
           "sequential_window and loop_min_gap must be positive, loop_candidates >= 0");
   Require(o.laps >= 1, "laps must be at least 1");
+  Require(o.loop_straight_per_radius > 0.0 && o.loop_straight_per_radius <= 100.0,
+          "loop_straight_per_radius must be in (0, 100]");
   Require(o.twin_fraction <= 0.9, "twin_fraction must be in [0, 0.9]");
   Require(o.street_module_width_m >= 2.0, "street_module_width must be at least 2 m (the shop sign is 2 m wide)");
   Require(o.num_threads >= 1, "num_threads must be at least 1");
@@ -84,6 +90,7 @@ SceneLayout BuildLayout(const SyntheticSceneOptions& options) {
   if (options.scene == kClean) return BuildOrbitLayout(options, /*symmetric=*/false, rng);
   if (options.scene == kStreet) return BuildStreetLayout(options, rng);
   if (options.scene == kCourtyard) return BuildCourtyardLayout(options, rng);
+  if (IsSyntheticFamily(options.scene)) return BuildFamilyLayout(options, rng);
   return BuildLoopLayout(options, rng);
 }
 
@@ -177,16 +184,20 @@ void MatchAllPairs(const std::vector<ViewPair>& pairs, SyntheticScene* scene, co
 }  // namespace
 
 std::vector<std::string> SyntheticSceneNames() {
-  return {kOrbitSymmetric, kStreet, kCourtyard, kClean, kSequentialLarge};
+  std::vector<std::string> names = {kOrbitSymmetric, kStreet, kCourtyard, kClean, kSequentialLarge};
+  for (const std::string& family : SyntheticFamilyNames()) names.push_back(family);
+  return names;
 }
 
 SyntheticScene GenerateSyntheticScene(const SyntheticSceneOptions& options, const ProgressCallback& progress) {
   SyntheticScene scene;
-  scene.options = ResolveDefaults(options);
+  scene.options = ResolveDefaults(options, &scene.description);
   scene.name = scene.options.scene;
   const SyntheticSceneOptions& o = scene.options;
 
   const SceneLayout layout = BuildLayout(o);
+  for (const auto& [name, value] : layout.description.values) scene.description.values[name] = value;
+  for (const auto& [name, label] : layout.description.labels) scene.description.labels[name] = label;
   const CameraIntrinsics intrinsics = CameraIntrinsics::Undistorted(
       CameraModel::kPinholeRadialK3, o.image_width, o.image_height, o.focal_px, 0.5 * o.image_width, 0.5 * o.image_height);
   const AppearanceTable appearances = MakeAppearanceTable(layout.num_appearances, o.seed);

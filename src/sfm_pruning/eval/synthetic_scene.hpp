@@ -8,8 +8,9 @@
 // a wrong relative pose: the false consensus that view-graph pruning must defeat. Every scene
 // also has unique texture (ground, distinctive objects), so the truth is recoverable.
 //
-// Scenes (docs/synthetic_scenes.md): orbit_symmetric, street, courtyard, clean, sequential_large.
-// Same options (seed included) give byte-identical scenes.
+// Scenes (docs/synthetic_scenes.md): orbit_symmetric, street, courtyard, clean, sequential_large,
+// and the procedural families family_* (synthetic_families.hpp), where the seed draws the whole
+// scene. Same options (seed included) give byte-identical scenes.
 #pragma once
 
 #include <cstdint>
@@ -67,6 +68,9 @@ struct SyntheticSceneOptions {
   // fraction of facade segments that repeat another segment (duplicates).
   int laps = 0;                 // default 2
   double twin_fraction = -1.0;  // default 0.25; 0 is allowed (negative = default)
+  // Length of each straight of the stadium-shaped loop over the radius of its end arcs (default
+  // 3): longer straights carry more building fronts that can repeat.
+  double loop_straight_per_radius = 0.0;
   // street: width of the facade module that repeats. At the default 6 m a view (45° across, 7 m
   // from the facades) sees one whole period, so every pair of views matches the facade and even
   // neighbours carry twin matches along their epipolar lines (docs/synthetic_scenes.md).
@@ -74,6 +78,14 @@ struct SyntheticSceneOptions {
 
   // Worker threads for matching; the output does not depend on it.
   int num_threads = 1;
+};
+
+// What a family scene drew from its seed (synthetic_families.hpp): named numbers and labels.
+// Empty for the fixed scenes.
+struct SceneDescription {
+  std::string family;
+  std::map<std::string, double> values;
+  std::map<std::string, std::string> labels;
 };
 
 // What the matcher did on one image pair, judged against the ground truth.
@@ -88,7 +100,8 @@ struct PairMatchStats {
 
 struct SyntheticScene {
   std::string name;
-  SyntheticSceneOptions options;  // with every default resolved
+  SyntheticSceneOptions options;  // with every default resolved (a family's draws included)
+  SceneDescription description;   // a family scene's drawn parameters
   // Views, the intrinsic, true poses, and landmarks observed at least twice, each observation
   // referencing its feature id and noisy pixel position.
   SfmData ground_truth;

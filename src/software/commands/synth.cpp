@@ -17,12 +17,14 @@
 #include <nlohmann/json.hpp>
 
 #include "sfm_pruning/io/ground_truth_cameras.hpp"
+#include "sfm_pruning/eval/synthetic_families.hpp"
 #include "sfm_pruning/eval/synthetic_scene.hpp"
 #include "sfm_pruning/io/colmap_database.hpp"
 #include "sfm_pruning/io/openmvg_features.hpp"
 #include "sfm_pruning/io/openmvg_matches.hpp"
 #include "sfm_pruning/io/openmvg_sfm_data.hpp"
 #include "sfm_pruning/util/atomic_file.hpp"
+#include "sfm_pruning/util/error.hpp"
 #include "software/cli_support.hpp"
 #include "software/commands.hpp"
 
@@ -58,7 +60,13 @@ nlohmann::json SceneSummary(const SyntheticScene& scene) {
                      {"loop_min_gap", o.loop_min_gap},
                      {"laps", o.laps},
                      {"twin_fraction", o.twin_fraction},
+                     {"loop_straight_per_radius", o.loop_straight_per_radius},
                      {"street_module_width_m", o.street_module_width_m}};
+  if (!scene.description.family.empty()) {
+    json["family"] = {{"name", scene.description.family},
+                      {"values", scene.description.values},
+                      {"labels", scene.description.labels}};
+  }
   json["num_landmarks"] = scene.ground_truth.structure.size();
   json["num_twin_landmarks"] = scene.twin_landmarks.size();
   size_t num_true = 0, num_twin = 0, num_random = 0;
@@ -137,38 +145,52 @@ void AddSynthCommand(CLI::App& app) {
   auto options = std::make_shared<sfm_pruning::SyntheticSceneOptions>();
   auto output = std::make_shared<std::string>();
   sfm_pruning::SyntheticSceneOptions& o = *options;
-  cmd->add_option("--scene", o.scene, "Scene")->required()->check(CLI::IsMember(sfm_pruning::SyntheticSceneNames()));
+  cmd->add_option("--scene", o.scene, "Scene: a fixed one, or a family_* whose seed draws the whole scene")->required()->check(CLI::IsMember(sfm_pruning::SyntheticSceneNames()));
   cmd->add_option("--output,-o", *output, "Output directory (replaced atomically)")->required();
   cmd->add_option("--seed", o.seed, "Random seed: same options and seed give identical files");
   cmd->add_option("--num_views", o.num_views, "Number of views (0: scene default)");
   cmd->add_option("--image_width", o.image_width, "Image width in pixels (0: scene default)");
   cmd->add_option("--image_height", o.image_height, "Image height in pixels (0: scene default)");
   cmd->add_option("--focal_px", o.focal_px, "Focal length in pixels (0: 1.2 * max(width, height))");
-  cmd->add_option("--noise_px", o.noise_px, "Sigma of the Gaussian keypoint noise, pixels")->capture_default_str();
-  cmd->add_option("--descriptor_noise", o.descriptor_noise, "Expected norm of the descriptor noise (unit histogram)")
-      ->capture_default_str();
-  cmd->add_option("--dropout", o.dropout, "Probability that a visible point is not detected")->capture_default_str();
-  cmd->add_option("--clutter_ratio", o.clutter_ratio, "Clutter keypoints per detected point")->capture_default_str();
+  // The capture conditions a family scene draws from its seed (synthetic_families.hpp).
+  std::vector<CLI::Option*> drawn_by_families = {
+      cmd->add_option("--noise_px", o.noise_px, "Sigma of the Gaussian keypoint noise, pixels")->capture_default_str(),
+      cmd->add_option("--descriptor_noise", o.descriptor_noise, "Expected norm of the descriptor noise (unit histogram)")
+          ->capture_default_str(),
+      cmd->add_option("--dropout", o.dropout, "Probability that a visible point is not detected")->capture_default_str(),
+      cmd->add_option("--clutter_ratio", o.clutter_ratio, "Clutter keypoints per detected point")->capture_default_str(),
+  };
   cmd->add_option("--max_incidence_deg", o.max_incidence_deg,
                   "Surfaces seen at a larger angle from their normal are not detected (>= 90: no facing test)")
       ->capture_default_str();
   cmd->add_option("--point_density_scale", o.point_density_scale, "Multiplies every surface's point density")
       ->capture_default_str();
   cmd->add_option("--ratio_test", o.ratio_test, "Lowe's ratio on descriptor distances")->capture_default_str();
-  cmd->add_option("--outlier_ratio", o.outlier_ratio,
-                  "Fraction of random wrong matches per pair (injected on top of the matcher's own)")
-      ->capture_default_str();
+  drawn_by_families.push_back(
+      cmd->add_option("--outlier_ratio", o.outlier_ratio,
+                      "Fraction of random wrong matches per pair (injected on top of the matcher's own)")
+          ->capture_default_str());
   cmd->add_option("--min_matches", o.min_matches, "Pairs with fewer descriptor matches are dropped")->capture_default_str();
   cmd->add_option("--sequential_window", o.sequential_window, "sequential_large: pairs i, i+1 .. i+window (0: 5)");
   cmd->add_option("--loop_candidates", o.loop_candidates, "sequential_large: retrieval candidates per view (0: 3)");
   cmd->add_option("--loop_min_gap", o.loop_min_gap, "sequential_large: frames between loop candidates (0: 50)");
   cmd->add_option("--laps", o.laps, "sequential_large: laps of the loop (0: 2)");
   cmd->add_option("--twin_fraction", o.twin_fraction, "sequential_large: fraction of repeated facades (default 0.25)");
+  cmd->add_option("--loop_straight_per_radius", o.loop_straight_per_radius,
+                  "sequential_large: length of each straight over the end arcs' radius (0: 3)");
   cmd->add_option("--street_module_width", o.street_module_width_m, "street: width of the repeated facade, metres")
       ->capture_default_str();
   cmd->add_option("--num_threads", o.num_threads, "Threads for matching (the output does not depend on it)")
       ->capture_default_str();
-  cmd->callback([options, output]() {
+  cmd->callback([options, output, drawn_by_families]() {
+    if (sfm_pruning::IsSyntheticFamily(options->scene)) {
+      for (const CLI::Option* option : drawn_by_families) {
+        if (option->count() > 0) {
+          throw sfm_pruning::Error(option->get_name() + ": " + options->scene +
+                                   " draws it from the seed; set it on a fixed scene instead");
+        }
+      }
+    }
     const SyntheticScene scene = sfm_pruning::GenerateSyntheticScene(*options, TerminalProgressBar());
     sfm_pruning::WriteDirectoryAtomically(*output, [&](const fs::path& dir) { WriteScene(scene, dir); });
     size_t num_matches = 0;

@@ -1,0 +1,256 @@
+#!/usr/bin/env python3
+"""Disambiguation over a distribution of scenes: the procedural families of `prunesfm synth`
+(family_street, family_courtyard, family_object, family_desk, family_loop, family_control), each
+seed a different scene, on two input paths, with GLOBAL and COLMAP 3.8 in the same run.
+
+The split is fixed by seed ranges, before any result is seen:
+  development  seeds 0 .. N-1            (tune on these)
+  held-out     seeds 100000 .. 100000+N-1 (only reported; never used to choose an option)
+
+Input paths:
+  own     `prunesfm run --database` on synth's database (putative matches only): our verification
+  colmap  COLMAP 3.8 verifies the same putative matches (`exhaustive_matcher`, or
+          `matches_importer` for the loops' pair lists), then `prunesfm run --database` takes its
+          two-view geometries, and COLMAP's own `mapper` runs on the same database
+
+Every result is kept in --work (one result.json per scene, input and engine) and reused by the next
+run unless --fresh, so a long benchmark can be stopped and resumed. Python 3 standard library.
+
+  python3 bench/family_bench.py --per_family 17 --jobs 2          # both splits, both inputs
+  python3 bench/family_bench.py --split dev --inputs own --per_family 6 --families family_street
+"""
+
+import argparse
+import concurrent.futures
+import json
+import shutil
+import statistics
+import sys
+from pathlib import Path
+
+sys.path.insert(0, str(Path(__file__).resolve().parent))
+import bench_support as bs  # noqa: E402
+import oracle_pruning_bench as oracle  # noqa: E402
+import run_benchmarks as rb  # noqa: E402
+
+FAMILIES = ["family_street", "family_courtyard", "family_object", "family_desk", "family_loop", "family_control"]
+SPLIT_FIRST_SEED = {"dev": 0, "heldout": 100000}
+# The oracles (EVALUATION.md): GLOBAL on the pairs whose twin matches do not outnumber their true
+# ones (a perfect edge pruning), and on those pairs with every twin match deleted too (perfect
+# match filtering). A family the first solves fails at the level of edges; one only the second
+# solves fails at the level of matches inside true pairs.
+ORACLES = {"GLOBAL@oracle_edges": False, "GLOBAL@oracle_matches": True}
+BARS = (90.0, 95.0)
+
+
+def parse_args(argv):
+    p = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
+    p.add_argument("--prunesfm", default=None, help="prunesfm binary (default: the newest build)")
+    p.add_argument("--colmap", default="colmap")
+    p.add_argument("--families", default=",".join(FAMILIES))
+    p.add_argument("--split", default="dev,heldout", help="dev, heldout or both (comma-separated)")
+    p.add_argument("--per_family", type=int, default=17, help="scenes per family and split")
+    p.add_argument("--inputs", default="own,colmap", help="own, colmap or both")
+    p.add_argument("--engines", default="GLOBAL,GLOBAL_PRUNED,colmap",
+                   help="ours (GLOBAL, GLOBAL_PRUNED), colmap (its mapper, on the colmap input only) and "
+                        "the oracles GLOBAL@oracle_edges, GLOBAL@oracle_matches (own input only)")
+    p.add_argument("--extra", default="", help="extra arguments for every `prunesfm run` (a variant)")
+    p.add_argument("--label", default="", help="name of the variant given by --extra (its own result folders)")
+    p.add_argument("--jobs", type=int, default=2, help="scenes run at once (each tool on 1 thread)")
+    p.add_argument("--timeout", type=int, default=1800, help="seconds per stage")
+    p.add_argument("--work", default="/tmp/prunesfm-families")
+    p.add_argument("--fresh", action="store_true", help="recompute results already in --work")
+    p.add_argument("--output", default=None, help="markdown report (default: print only)")
+    p.add_argument("--json", default=None, help="every row, machine-readable")
+    return p.parse_args(argv)
+
+
+def scene_list(args):
+    scenes = []
+    for split in args.split.split(","):
+        first = SPLIT_FIRST_SEED[split]
+        for family in args.families.split(","):
+            for k in range(args.per_family):
+                seed = first + k
+                scenes.append({"split": split, "family": family, "seed": seed, "key": f"{family}-{seed}"})
+    return scenes
+
+
+def prepare(args, prunesfm, scene):
+    """synth, once per scene (kept in --work)."""
+    folder = Path(args.work) / scene["key"]
+    synth = folder / "synth"
+    if not (synth / "database.db").is_file():
+        stage = rb.run_stage("synth", [prunesfm, "synth", "--scene", scene["family"], "--seed", scene["seed"],
+                                       "--output", synth], folder / "synth.log", args.timeout)
+        if stage["rc"] != 0:
+            raise RuntimeError(f"{scene['key']}: synth failed: {stage.get('error')}")
+    summary = json.loads((synth / "ground_truth" / "synthetic_scene.json").read_text())
+    return synth, summary
+
+
+def colmap_verified(args, scene, synth):
+    """COLMAP 3.8's verification of the scene's putative matches (kept in --work)."""
+    folder = Path(args.work) / scene["key"]
+    verified = folder / "colmap_verified.db"
+    if verified.is_file() and rb.num_verified_pairs(verified) > 0:
+        return verified
+    scratch = folder / "colmap_verify.db"
+    rb.copy_database(synth / "database.db", scratch)
+    names, pairs = rb.colmap_database_pairs(scratch)
+    n = len(names)
+    if len(pairs) == n * (n - 1) // 2:
+        argv = [args.colmap, "exhaustive_matcher", "--database_path", scratch]
+    else:
+        pair_list = folder / "pairs.txt"
+        pair_list.write_text("".join(f"{names[a]} {names[b]}\n" for a, b in pairs))
+        argv = [args.colmap, "matches_importer", "--database_path", scratch, "--match_list_path", pair_list,
+                "--match_type", "pairs"]
+    argv += ["--SiftMatching.use_gpu", "0", "--SiftMatching.num_threads", "1"]
+    stage = rb.run_stage("colmap verify", argv, folder / "colmap_verify.log", args.timeout, rb.colmap_env())
+    if stage["rc"] != 0:
+        raise RuntimeError(f"{scene['key']}: COLMAP verification failed: {stage.get('error')}")
+    rb.copy_database(scratch, verified)
+    scratch.unlink()
+    return verified
+
+
+def run_engine(args, prunesfm, scene, synth, input_path, database, engine):
+    label = engine + (f"+{args.label}" if args.label and engine != "colmap" else "")
+    out = Path(args.work) / scene["key"] / input_path / label
+    result_path = out / "result.json"
+    if result_path.is_file() and not args.fresh:
+        return json.loads(result_path.read_text())
+    if out.exists():
+        shutil.rmtree(out)
+    out.mkdir(parents=True)
+    db = out / "database.db"
+    rb.copy_database(database, db)
+    images = synth / "images"  # no image files: synthetic scenes are features only
+    if engine in ORACLES:
+        truth = synth / "ground_truth"
+        twin_pairs, _ = oracle.twin_dominated_pairs(truth / "synthetic_scene.json", 1.0)
+        oracle.delete_pairs(db, twin_pairs)
+        if ORACLES[engine]:
+            oracle.delete_twin_matches(db, oracle.read_feature_landmarks(truth / "feature_landmarks.txt"))
+    if engine == "colmap":
+        stage, model = bs.colmap_mapper(args.colmap, db, images, out, 1, args.timeout, synthetic=True)
+    else:
+        argv = [prunesfm, "run", "--database", db, "--image_path", images, "--output_path", out / "result",
+                "--engine", engine.split("@")[0], "--num_threads", 1, *args.extra.split()]
+        stage = rb.run_stage("run", argv, out / "run.log", args.timeout)
+        model, _ = rb.largest_model(out / "result" / "sparse")
+    evaluation = bs.evaluate_against(prunesfm, model, synth / "ground_truth" / "gt_cameras.txt", out, 0,
+                                     args.timeout)
+    result = {"scene": scene["key"], "family": scene["family"], "seed": scene["seed"], "split": scene["split"],
+              "input": input_path, "engine": label, "seconds": stage["seconds"], "rc": stage["rc"],
+              "registered": evaluation["registered"], "num_views": evaluation["num_reference"],
+              "auc": evaluation["auc"]}
+    db.unlink()
+    result_path.write_text(json.dumps(result, indent=1) + "\n")
+    return result
+
+
+def run_scene(args, prunesfm, scene):
+    synth, summary = prepare(args, prunesfm, scene)
+    family = summary.get("family", {})
+    rows = []
+    engines = args.engines.split(",")
+    for input_path in args.inputs.split(","):
+        database = synth / "database.db" if input_path == "own" else colmap_verified(args, scene, synth)
+        for engine in engines:
+            if (engine == "colmap" and input_path != "colmap") or (engine in ORACLES and input_path != "own"):
+                continue
+            row = run_engine(args, prunesfm, scene, synth, input_path, database, engine)
+            row["geometry"] = family.get("labels", {}).get("geometry")
+            row["unique_share"] = family.get("values", {}).get("unique_share")
+            rows.append(row)
+            print(f"{scene['key']} {input_path} {row['engine']}: AUC@10 {row['auc']['10']:.1f} "
+                  f"({row['registered']}/{row['num_views']}, {row['seconds']:.0f} s)", flush=True)
+    return rows
+
+
+def percentile(values, q):
+    """Linear-interpolated q-th percentile (q in [0, 100]) of a non-empty list."""
+    ordered = sorted(values)
+    position = (len(ordered) - 1) * q / 100.0
+    low = int(position)
+    high = min(low + 1, len(ordered) - 1)
+    return ordered[low] + (ordered[high] - ordered[low]) * (position - low)
+
+
+def summarise(rows):
+    """Per (split, family, input, engine): n, median, 10th percentile, shares above the bars."""
+    groups = {}
+    for row in rows:
+        groups.setdefault((row["split"], row["family"], row["input"], row["engine"]), []).append(row["auc"]["10"])
+    table = []
+    for (split, family, input_path, engine), values in sorted(groups.items()):
+        table.append({"split": split, "family": family, "input": input_path, "engine": engine, "n": len(values),
+                      "median": statistics.median(values), "p10": percentile(values, 10),
+                      **{f"share_{bar:g}": sum(v >= bar for v in values) / len(values) for bar in BARS}})
+    return table
+
+
+def control_drops(rows):
+    """For each twin-free control: GLOBAL_PRUNED's AUC@10 minus GLOBAL's on the same input."""
+    by_key = {(r["scene"], r["input"], r["engine"]): r["auc"]["10"] for r in rows if r["family"] == "family_control"}
+    drops = []
+    for (scene, input_path, engine), value in by_key.items():
+        if engine.startswith("GLOBAL_PRUNED") and (scene, input_path, "GLOBAL") in by_key:
+            drops.append((value - by_key[(scene, input_path, "GLOBAL")], scene, input_path))
+    return sorted(drops)
+
+
+def markdown(args, argv, prunesfm, rows):
+    lines = bs.header_lines("Disambiguation over the scene families", ["python3", "bench/family_bench.py", *argv],
+                            prunesfm, args.colmap)
+    lines += ["AUC@10 (pairwise relative pose, `prunesfm evaluate`) per family, input path and engine: the median, "
+              "the 10th percentile and the share of scenes at or above 90 and 95. Development seeds "
+              f"0..{args.per_family - 1}, held-out seeds 100000..{100000 + args.per_family - 1} "
+              "(`bench/family_bench.py` says how the split is fixed).", ""]
+    table = summarise(rows)
+    for split in ("heldout", "dev"):
+        part = [t for t in table if t["split"] == split]
+        if not part:
+            continue
+        lines += [f"### {'Held-out' if split == 'heldout' else 'Development'} split", "",
+                  "| family | input | engine | scenes | median | 10th pct | >= 90 | >= 95 |",
+                  "|---|---|---|---|---|---|---|---|"]
+        for t in part:
+            lines.append(f"| {t['family']} | {t['input']} | {t['engine']} | {t['n']} | {t['median']:.1f} | "
+                         f"{t['p10']:.1f} | {100 * t['share_90']:.0f} % | {100 * t['share_95']:.0f} % |")
+        lines.append("")
+    drops = control_drops(rows)
+    if drops:
+        worst = drops[0]
+        lines += [f"Twin-free controls: GLOBAL_PRUNED minus GLOBAL, worst {worst[0]:+.1f} ({worst[1]}, {worst[2]} "
+                  f"input), {sum(d < -0.5 for d, _, _ in drops)} of {len(drops)} below -0.5.", ""]
+    return lines
+
+
+def main(argv):
+    args = parse_args(argv)
+    prunesfm = rb.find_prunesfm(args.prunesfm)
+    Path(args.work).mkdir(parents=True, exist_ok=True)
+    scenes = scene_list(args)
+    rows = []
+    with concurrent.futures.ThreadPoolExecutor(max_workers=max(1, args.jobs)) as pool:
+        futures = {pool.submit(run_scene, args, prunesfm, scene): scene for scene in scenes}
+        for future in concurrent.futures.as_completed(futures):
+            try:
+                rows += future.result()
+            except RuntimeError as error:
+                print(f"error: {error}", file=sys.stderr, flush=True)
+    rows.sort(key=lambda r: (r["split"], r["family"], r["seed"], r["input"], r["engine"]))
+    lines = markdown(args, argv, prunesfm, rows)
+    print("\n".join(lines))
+    if args.output:
+        Path(args.output).write_text("\n".join(lines) + "\n")
+    if args.json:
+        Path(args.json).write_text(json.dumps(rows, indent=1) + "\n")
+    return 0
+
+
+if __name__ == "__main__":
+    sys.exit(main(sys.argv[1:]))
