@@ -115,18 +115,39 @@ def colmap_verified(args, scene, synth):
     return verified
 
 
+def edge_verdicts(synth, result_dir):
+    """How the solve's view graph treats the scene's pairs: verified edges whose twin matches
+    outnumber their true ones ("twin edges") and the others, each kept or removed by the pruning
+    (view_graph.json of `prunesfm run`); None when the run wrote no view graph."""
+    graph_path = Path(result_dir) / "view_graph.json"
+    if not graph_path.is_file():
+        return None
+    stats = {(p["i"], p["j"]): p for p in json.loads((synth / "ground_truth" / "synthetic_scene.json").read_text())["pairs"]}
+    counts = {"twin_kept": 0, "twin_removed": 0, "true_kept": 0, "true_removed": 0}
+    for edge in json.loads(graph_path.read_text())["edges"]:
+        pair = stats.get((min(edge["i"], edge["j"]), max(edge["i"], edge["j"])))
+        kind = "twin" if pair is not None and pair["twin"] > pair["true"] else "true"
+        counts[f"{kind}_{'removed' if edge['removed'] else 'kept'}"] += 1
+    return counts
+
+
 def run_engine(args, prunesfm, scene, synth, input_path, database, engine):
     label = engine + (f"+{args.label}" if args.label and engine != "colmap" else "")
     out = Path(args.work) / scene["key"] / input_path / label
     result_path = out / "result.json"
     if result_path.is_file() and not args.fresh:
-        return json.loads(result_path.read_text())
+        result = json.loads(result_path.read_text())
+        if "edges" not in result:  # a result written before the edge verdicts were recorded
+            result["edges"] = edge_verdicts(synth, out / "result")
+            result_path.write_text(json.dumps(result, indent=1) + "\n")
+        return result
     if out.exists():
         shutil.rmtree(out)
     out.mkdir(parents=True)
     db = out / "database.db"
     rb.copy_database(database, db)
-    images = synth / "images"  # no image files: synthetic scenes are features only
+    images = out / "images"  # empty: synthetic scenes are features only (COLMAP wants the folder)
+    images.mkdir()
     if engine in ORACLES:
         truth = synth / "ground_truth"
         twin_pairs, _ = oracle.twin_dominated_pairs(truth / "synthetic_scene.json", 1.0)
@@ -145,7 +166,7 @@ def run_engine(args, prunesfm, scene, synth, input_path, database, engine):
     result = {"scene": scene["key"], "family": scene["family"], "seed": scene["seed"], "split": scene["split"],
               "input": input_path, "engine": label, "seconds": stage["seconds"], "rc": stage["rc"],
               "registered": evaluation["registered"], "num_views": evaluation["num_reference"],
-              "auc": evaluation["auc"]}
+              "auc": evaluation["auc"], "edges": edge_verdicts(synth, out / "result")}
     db.unlink()
     result_path.write_text(json.dumps(result, indent=1) + "\n")
     return result
@@ -221,6 +242,24 @@ def markdown(args, argv, prunesfm, rows):
             lines.append(f"| {t['family']} | {t['input']} | {t['engine']} | {t['n']} | {t['median']:.1f} | "
                          f"{t['p10']:.1f} | {100 * t['share_90']:.0f} % | {100 * t['share_95']:.0f} % |")
         lines.append("")
+    lines += ["### What the pruning does to the edges", "",
+              "Verified edges whose twin matches outnumber their true ones (twin edges) and the others (true "
+              "edges), summed over the scenes: the share of each that the pruning removed.", "",
+              "| split | family | input | engine | twin edges | removed | true edges | removed |",
+              "|---|---|---|---|---|---|---|---|"]
+    sums = {}
+    for row in rows:
+        if row.get("edges") and row["engine"].startswith("GLOBAL_PRUNED"):
+            key = (row["split"], row["family"], row["input"], row["engine"])
+            total = sums.setdefault(key, dict.fromkeys(row["edges"], 0))
+            for name, count in row["edges"].items():
+                total[name] += count
+    for (split, family, input_path, engine), c in sorted(sums.items()):
+        twins, trues = c["twin_kept"] + c["twin_removed"], c["true_kept"] + c["true_removed"]
+        lines.append(f"| {split} | {family} | {input_path} | {engine} | {twins} | "
+                     f"{100 * c['twin_removed'] / max(1, twins):.0f} % | {trues} | "
+                     f"{100 * c['true_removed'] / max(1, trues):.0f} % |")
+    lines.append("")
     drops = control_drops(rows)
     if drops:
         worst = drops[0]

@@ -102,7 +102,8 @@ SceneLayout BuildDeskFamilyLayout(const SyntheticSceneOptions& options, bool twi
   std::uniform_real_distribution<double> yaw(0.0, 2 * M_PI);
   for (const Item& item : items) {
     const double radius = 0.5 * std::hypot(item.design->length, item.design->depth);
-    std::uniform_real_distribution<double> px(-0.5 * desk_width + radius, 0.5 * desk_width - radius);
+    // The middle 70 % of the width, which every view of the sweep below sees.
+    std::uniform_real_distribution<double> px(-0.35 * desk_width + radius, 0.35 * desk_width - radius);
     std::uniform_real_distribution<double> py(-0.5 * desk_depth + radius, 0.5 * desk_depth - radius);
     Eigen::Vector3d center = Eigen::Vector3d::Zero();
     for (int attempt = 0; attempt < kPlacementTries; ++attempt) {
@@ -140,11 +141,11 @@ SceneLayout BuildDeskFamilyLayout(const SyntheticSceneOptions& options, bool twi
       const double angle = -M_PI / 2 - 0.5 * arc + t * arc;
       center = Eigen::Vector3d(distance * std::cos(angle), distance * std::sin(angle), elevation);
     } else {
-      center = Eigen::Vector3d((t - 0.5) * 1.2 * desk_width, -distance,
+      center = Eigen::Vector3d((t - 0.5) * 0.6 * desk_width, -distance,
                                elevation + sweep_height * std::sin(2 * M_PI * 3 * t));
     }
     for (int c = 0; c < 3; ++c) center[c] += position_jitter(rng);
-    Eigen::Vector3d target = path == "arc" ? Eigen::Vector3d::Zero() : Eigen::Vector3d(0.6 * center.x(), 0.0, 0.0);
+    Eigen::Vector3d target = path == "arc" ? Eigen::Vector3d::Zero() : Eigen::Vector3d(0.5 * center.x(), 0.0, 0.0);
     for (int c = 0; c < 3; ++c) target[c] += target_jitter(rng);
     layout.poses.push_back(LookAtPose(center, target));
   }
