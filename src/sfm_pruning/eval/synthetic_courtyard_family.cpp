@@ -1,7 +1,7 @@
 // family_courtyard: an enclosure whose wall print repeats with 2-, 3-, 4- or 6-fold symmetry,
 // drawn per seed: a polygonal courtyard (a rectangle with alike opposite walls for 2-fold, a
 // hexagon with alternating walls for 3-fold, a square or hexagon of one wall for 4- and 6-fold)
-// or a round rotunda whose print covers 1/n of the circle. Cameras stand on a ring inside (0.3-0.6
+// or a round rotunda whose print covers 1/n of the circle. Cameras stand on a ring inside (0.2-0.35
 // of the radius) and look outward over a full or partial turn. The unique texture (2-30 % of the points) is the paving, a
 // door on one wall, or an object standing in the enclosure.
 #include <algorithm>
@@ -86,9 +86,10 @@ SceneLayout BuildCourtyardFamilyLayout(const SyntheticSceneOptions& options, boo
   const double wall_height = draw.Uniform("wall_height_m", 5.0, 10.0);
   const double unique_share = draw.Uniform("unique_share_target", 0.02, 0.30);
   const std::string placement = draw.Choice("unique_placement", {"ground", "door", "object"});
-  // The ring is kept at 0.3 of the radius or more: cameras turning almost on the spot give
-  // baselines too short for any solver to fix the translation directions the metric scores.
-  const double ring_radius = draw.Uniform("camera_ring_fraction", 0.3, 0.6) * apothem;
+  // A ring of 0.2-0.35 of the radius, as a courtyard is photographed from near its middle: a
+  // ring much closer to the centre gives baselines too short to measure translation directions,
+  // one close to the walls a view graph so thin that the solve drifts even without twins.
+  const double ring_radius = draw.Uniform("camera_ring_fraction", 0.2, 0.35) * apothem;
   const bool full_turn = draw.Chance("full_turn", 0.6);
   const double arc = full_turn ? 2 * M_PI : DegToRad(draw.Uniform("arc_deg", std::min(360.0, 1.2 * 360.0 / fold), 360.0));
   const double pitch_deg = draw.Uniform("pitch_deg", -10.0, 5.0);

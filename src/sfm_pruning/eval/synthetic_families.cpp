@@ -54,7 +54,7 @@ struct ViewCountRange {
 
 ViewCountRange ViewCounts(const std::string& geometry) {
   if (geometry == "street") return {30, 48};
-  if (geometry == "courtyard") return {32, 48};
+  if (geometry == "courtyard") return {40, 56};
   if (geometry == "object") return {32, 60};
   if (geometry == "desk") return {28, 44};
   return {300, 500};  // loop: two laps of 150-250 views
