@@ -2,8 +2,9 @@
 // drawn per seed: a polygonal courtyard (a rectangle with alike opposite walls for 2-fold, a
 // hexagon with alternating walls for 3-fold, a square or hexagon of one wall for 4- and 6-fold)
 // or a round rotunda whose print covers 1/n of the circle. Cameras stand on a ring inside (0.2-0.35
-// of the radius) and look outward over a full or partial turn. The unique texture (2-30 % of the points) is the paving, a
-// door on one wall, or an object standing in the enclosure.
+// of the radius) and look outward and slightly down over a full or partial turn. The unique
+// texture (2-30 % of the points) is the paving, a door on one wall, or an object standing in the
+// enclosure (then the paving is sparse).
 #include <algorithm>
 #include <cmath>
 #include <string>
@@ -21,6 +22,7 @@ constexpr double kDoorStandOffM = 0.1;
 constexpr double kObjectSideM = 1.5;
 constexpr double kObjectHeightM = 2.0;
 constexpr double kGroundReliefM = 0.01;
+constexpr double kSparseGroundDensityPerM2 = 1.0;
 constexpr double kMaxUniqueDensityPerM2 = 400.0;
 constexpr double kMinUniqueDensityPerM2 = 0.5;
 constexpr double kCameraHeightM = 1.7;
@@ -92,7 +94,8 @@ SceneLayout BuildCourtyardFamilyLayout(const SyntheticSceneOptions& options, boo
   const double ring_radius = draw.Uniform("camera_ring_fraction", 0.2, 0.35) * apothem;
   const bool full_turn = draw.Chance("full_turn", 0.6);
   const double arc = full_turn ? 2 * M_PI : DegToRad(draw.Uniform("arc_deg", std::min(360.0, 1.2 * 360.0 / fold), 360.0));
-  const double pitch_deg = draw.Uniform("pitch_deg", -10.0, 5.0);
+  // Looking slightly down, as from a person's height: the paving shows at the bottom of a view.
+  const double pitch_deg = draw.Uniform("pitch_deg", -15.0, -5.0);
   const double start_angle = draw.Uniform("start_angle_deg", 0.0, 360.0);
 
   // The walls: `fold` copies of one print (a control gives every copy its own print).
@@ -142,13 +145,17 @@ SceneLayout BuildCourtyardFamilyLayout(const SyntheticSceneOptions& options, boo
     const double angle = DegToRad(draw.Uniform("object_angle_deg", 0.0, 360.0));
     const Eigen::Vector3d center(distance * std::cos(angle), distance * std::sin(angle), 0.0);
     PlaceUniqueBox(center, side, kObjectHeightM, angle, density * s, &layout, rng);
-  } else {
-    const double half = apothem * (round ? 1.0 : 1.6);  // covers the rectangle's long side too
-    const double density = UniqueTextureDensity(unique_share, wall_points, 4 * half * half, kMinUniqueDensityPerM2,
-                                                kMaxUniqueDensityPerM2);
-    const Texture ground = MakeTexture(2 * half, 2 * half, density * s, kGroundReliefM, &layout, rng);
-    PlaceTexture(ground, {-half, -half, 0.0}, Eigen::Vector3d::UnitX(), Eigen::Vector3d::UnitY(), &layout);
   }
+  // The paving: the drawn share of unique texture when it is the placement, else sparse. Every
+  // view sees some of it, so that none sees a single wall plane only (a degenerate case for the
+  // two-view geometry of any pipeline, not a question of repetition).
+  const double half = apothem * (round ? 1.0 : 1.6);  // covers the rectangle's long side too
+  const double ground_density =
+      placement == "ground" ? UniqueTextureDensity(unique_share, wall_points, 4 * half * half, kMinUniqueDensityPerM2,
+                                                   kMaxUniqueDensityPerM2)
+                            : kSparseGroundDensityPerM2;
+  const Texture ground = MakeTexture(2 * half, 2 * half, ground_density * s, kGroundReliefM, &layout, rng);
+  PlaceTexture(ground, {-half, -half, 0.0}, Eigen::Vector3d::UnitX(), Eigen::Vector3d::UnitY(), &layout);
   draw.Record("unique_share", UniquePointShare(layout));
 
   // Cameras on a ring inside, looking outward, over the drawn arc.
