@@ -38,7 +38,8 @@ TEST(SyntheticFamilies, AreListedAsScenes) {
 TEST(SyntheticFamilies, SameSeedGivesTheSameScene) {
   for (const char* family : {"family_street", "family_desk"}) {
     SyntheticSceneOptions options = FamilyOptions(family, 5);
-    options.num_views = 12;
+    options.num_views = 8;
+    options.point_density_scale = 0.2;
     const SyntheticScene a = GenerateSyntheticScene(options);
     const SyntheticScene b = GenerateSyntheticScene(options);
     EXPECT_EQ(a.description.values, b.description.values) << family;
@@ -94,7 +95,14 @@ TEST(SyntheticFamilies, TwinsWhereTheFamilySays) {
   for (const std::string& family : SyntheticFamilyNames()) {
     for (uint64_t seed : {1u, 100001u}) {
       SyntheticSceneOptions options = FamilyOptions(family, seed);
-      options.point_density_scale = 0.3;
+      // Twins are a property of the layout, not of the matches: few views, or (the loop, whose
+      // repeated fronts need its length) few points.
+      if (family == "family_loop") {
+        options.point_density_scale = 0.05;
+      } else {
+        options.num_views = 4;
+        options.point_density_scale = 0.3;
+      }
       const SyntheticScene scene = GenerateSyntheticScene(options);
       const std::string what = family + " seed " + std::to_string(seed);
       EXPECT_EQ(scene.twin_landmarks.empty(), family == "family_control") << what;
@@ -112,13 +120,13 @@ TEST(SyntheticFamilies, ConsecutiveViewsShareTrueMatches) {
   for (const std::string& family : SyntheticFamilyNames()) {
     if (family == "family_loop") continue;  // sequential_large's layout: synth_sequential_test
     SyntheticSceneOptions options = FamilyOptions(family, 2);
-    options.point_density_scale = 1.0;  // the scenes as the benchmark has them
+    options.point_density_scale = 0.5;  // half the benchmark's points (and a quarter of its matching time)
     const SyntheticScene scene = GenerateSyntheticScene(options);
     const auto num_views = static_cast<IndexT>(scene.ground_truth.views.size());
-    for (IndexT v = 0; v < num_views; ++v) EXPECT_GE(scene.features.at(v).size(), 30u) << family << " view " << v;
+    for (IndexT v = 0; v < num_views; ++v) EXPECT_GE(scene.features.at(v).size(), 15u) << family << " view " << v;
     size_t linked = 0;
-    for (IndexT v = 0; v + 1 < num_views; ++v) linked += TrueMatches(scene, v, v + 1) >= 15 ? 1 : 0;
-    EXPECT_GE(linked, (num_views - 1) * 8 / 10) << family;  // consecutive views mostly share 15+ true matches
+    for (IndexT v = 0; v + 1 < num_views; ++v) linked += TrueMatches(scene, v, v + 1) >= 8 ? 1 : 0;
+    EXPECT_GE(linked, (num_views - 1) * 8 / 10) << family;  // consecutive views mostly share 8+ true matches
   }
 }
 
