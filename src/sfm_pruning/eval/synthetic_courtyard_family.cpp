@@ -61,17 +61,15 @@ std::vector<Wall> PolygonWalls(int m, double apothem, double aspect) {
   return walls;
 }
 
-// A box of the given footprint and height on the ground, every face its own texture.
+// A box of the given footprint and height on the ground, every face its own texture; `yaw`
+// turns its right face's normal from +x.
 void PlaceUniqueBox(const Eigen::Vector3d& center, double side_m, double height_m, double yaw, double density,
                     SceneLayout* layout, std::mt19937_64& rng) {
   const Eigen::Vector3d z = Eigen::Vector3d::UnitZ();
-  for (int face = 0; face < 4; ++face) {
-    const double angle = yaw + face * M_PI / 2;
-    const Eigen::Vector3d normal = RotateAboutZ(Eigen::Vector3d::UnitX(), angle);
-    const Eigen::Vector3d u = z.cross(normal);  // u x z = normal
-    const Eigen::Vector3d origin = center + 0.5 * side_m * normal - 0.5 * side_m * u;
+  const Eigen::Vector3d length_axis = z.cross(RotateAboutZ(Eigen::Vector3d::UnitX(), yaw));
+  for (const BoxSide& face : BoxSideFaces(center, length_axis, side_m, side_m)) {
     const Texture texture = MakeTexture(side_m, height_m, density, 0.02, layout, rng);
-    PlaceTexture(texture, origin, u, z, layout);
+    PlaceTexture(texture, face.origin, face.u_axis, z, layout);
   }
 }
 

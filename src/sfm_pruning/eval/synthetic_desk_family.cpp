@@ -41,12 +41,9 @@ BoxDesign MakeBoxDesign(double length, double depth, double height, double densi
 void PlaceBox(const BoxDesign& design, const Eigen::Vector3d& center, double yaw, SceneLayout* layout) {
   const Eigen::Matrix3d R = Eigen::AngleAxisd(yaw, Eigen::Vector3d::UnitZ()).toRotationMatrix();
   const Eigen::Vector3d x = R.col(0), y = R.col(1), z = Eigen::Vector3d::UnitZ();
-  const double a = 0.5 * design.length, b = 0.5 * design.depth;
-  const Eigen::Vector3d origins[4] = {center - a * x - b * y, center + a * x - b * y, center + a * x + b * y,
-                                      center - a * x + b * y};
-  const Eigen::Vector3d axes[4] = {x, y, -x, -y};  // u x z points outward
-  for (int k = 0; k < 4; ++k) PlaceTexture(design.faces[k], origins[k], axes[k], z, layout);
-  PlaceTexture(design.faces[4], center - a * x - b * y + design.height * z, x, y, layout);
+  const std::array<BoxSide, 4> sides = BoxSideFaces(center, x, design.length, design.depth);
+  for (int k = 0; k < 4; ++k) PlaceTexture(design.faces[k], sides[k].origin, sides[k].u_axis, z, layout);
+  PlaceTexture(design.faces[4], sides[0].origin + design.height * z, x, y, layout);
 }
 
 }  // namespace

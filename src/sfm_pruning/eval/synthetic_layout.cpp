@@ -51,6 +51,17 @@ void PlaceTextureOnCylinder(const Texture& texture, const Eigen::Vector3d& base,
   }
 }
 
+std::array<BoxSide, 4> BoxSideFaces(const Eigen::Vector3d& center, const Eigen::Vector3d& length_axis,
+                                    double length_m, double depth_m) {
+  const Eigen::Vector3d& x = length_axis;
+  const Eigen::Vector3d y = Eigen::Vector3d::UnitZ().cross(x);
+  const double a = 0.5 * length_m, b = 0.5 * depth_m;
+  return {{{center - a * x - b * y, x, length_m},
+           {center + a * x - b * y, y, depth_m},
+           {center + a * x + b * y, -x, length_m},
+           {center - a * x + b * y, -y, depth_m}}};
+}
+
 Eigen::Vector3d RotateAboutZ(const Eigen::Vector3d& v, double angle) {
   return Eigen::AngleAxisd(angle, Eigen::Vector3d::UnitZ()) * v;
 }

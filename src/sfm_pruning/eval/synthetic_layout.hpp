@@ -2,6 +2,7 @@
 // camera poses. Each scene file (synthetic_*_scene.cpp) builds one SceneLayout.
 #pragma once
 
+#include <array>
 #include <cstdint>
 #include <random>
 #include <vector>
@@ -61,6 +62,21 @@ void PlaceTexture(const Texture& texture, const Eigen::Vector3d& origin, const E
 // `base`, w outward. Normals point outward (the cylinder is seen from outside) or inward.
 void PlaceTextureOnCylinder(const Texture& texture, const Eigen::Vector3d& base, double radius_m,
                             double start_angle, bool outward, SceneLayout* layout);
+
+// A side face of an upright box: where its texture's u axis starts (at the ground), the
+// direction u runs along (u x z points out of the box) and the face's width.
+struct BoxSide {
+  Eigen::Vector3d origin = Eigen::Vector3d::Zero();
+  Eigen::Vector3d u_axis = Eigen::Vector3d::UnitX();
+  double width_m = 0.0;
+};
+
+// The four side faces of an upright box whose footprint is centred on `center`, its length along
+// `length_axis` (a horizontal unit vector) and its depth along z x length_axis: front (the -depth
+// side), right, back, left, each turned 90 degrees counter-clockwise from the one before. A
+// texture placed on the front and again on the back is the front turned 180 degrees.
+std::array<BoxSide, 4> BoxSideFaces(const Eigen::Vector3d& center, const Eigen::Vector3d& length_axis,
+                                    double length_m, double depth_m);
 
 // `v` turned by `angle` radians about the world's vertical axis.
 Eigen::Vector3d RotateAboutZ(const Eigen::Vector3d& v, double angle);

@@ -21,22 +21,6 @@ constexpr double kRadiusJitterFraction = 0.03;
 constexpr double kAngleJitterDeg = 1.5;
 constexpr double kTargetJitterFraction = 0.05;
 
-// The four side faces of a box centred on the z axis (length along x, depth along y): origin,
-// u axis and width of face k (0 front -y, 1 right +x, 2 back +y, 3 left -x), normals outward.
-struct Face {
-  Eigen::Vector3d origin;
-  Eigen::Vector3d u;
-  double width = 0.0;
-};
-
-std::vector<Face> BoxSideFaces(double length, double depth) {
-  const double a = 0.5 * length, b = 0.5 * depth;
-  return {{{-a, -b, 0}, Eigen::Vector3d::UnitX(), length},
-          {{a, -b, 0}, Eigen::Vector3d::UnitY(), depth},
-          {{a, b, 0}, -Eigen::Vector3d::UnitX(), length},
-          {{-a, b, 0}, -Eigen::Vector3d::UnitY(), depth}};
-}
-
 }  // namespace
 
 SceneLayout BuildObjectFamilyLayout(const SyntheticSceneOptions& options, bool twins, ParameterDraw& draw,
@@ -81,14 +65,14 @@ SceneLayout BuildObjectFamilyLayout(const SyntheticSceneOptions& options, bool t
     const double depth = package ? length : draw.Uniform("depth_fraction", 0.4, 0.8) * scale;
     height = draw.Uniform("height_fraction", 0.6, 1.1) * scale;
     footprint_radius = 0.5 * std::hypot(length, depth);
-    const std::vector<Face> faces = BoxSideFaces(length, depth);
+    const std::array<BoxSide, 4> faces = BoxSideFaces(Eigen::Vector3d::Zero(), Eigen::Vector3d::UnitX(), length, depth);
     // box: front = back and left = right (each turned 180 degrees); package: one print all round.
     std::vector<Texture> prints;
     for (int k = 0; k < 4; ++k) {
       const int source = package ? 0 : k % 2;
       const bool copy = twins && k > source;
-      prints.push_back(copy ? prints[source] : print(faces[k].width, height));
-      PlaceTexture(prints.back(), faces[k].origin, faces[k].u, z, &layout);
+      prints.push_back(copy ? prints[source] : print(faces[k].width_m, height));
+      PlaceTexture(prints.back(), faces[k].origin, faces[k].u_axis, z, &layout);
       object_points += prints.back().uvw.size();
     }
     if (placement == "top") {
@@ -100,13 +84,13 @@ SceneLayout BuildObjectFamilyLayout(const SyntheticSceneOptions& options, bool t
     } else if (placement == "sticker") {
       const double density = UniqueTextureDensity(unique_share, object_points, sticker_size * sticker_size,
                                                   kMinUniqueDensityPerM2, kMaxUniqueDensityPerM2);
-      const Face& face = faces[draw.Integer("sticker_face", 0, 3)];
-      const Eigen::Vector3d normal = face.u.cross(z);
-      sticker_size = std::min(sticker_size, 0.8 * face.width);
+      const BoxSide& face = faces[draw.Integer("sticker_face", 0, 3)];
+      const Eigen::Vector3d normal = face.u_axis.cross(z);
+      sticker_size = std::min(sticker_size, 0.8 * face.width_m);
       const Texture sticker = MakeTexture(sticker_size, sticker_size, density * s, 0.0, &layout, rng);
-      const Eigen::Vector3d origin = face.origin + 0.5 * (face.width - sticker_size) * face.u +
+      const Eigen::Vector3d origin = face.origin + 0.5 * (face.width_m - sticker_size) * face.u_axis +
                                      0.5 * (height - sticker_size) * z + kStickerStandOffM * normal;
-      PlaceTexture(sticker, origin, face.u, z, &layout);
+      PlaceTexture(sticker, origin, face.u_axis, z, &layout);
     }
   }
   const double ground_half = 4.5 * scale;
