@@ -99,15 +99,7 @@ def colmap_verified(args, scene, synth):
         return verified
     scratch = folder / "colmap_verify.db"
     rb.copy_database(synth / "database.db", scratch)
-    names, pairs = rb.colmap_database_pairs(scratch)
-    n = len(names)
-    if len(pairs) == n * (n - 1) // 2:
-        argv = [args.colmap, "exhaustive_matcher", "--database_path", scratch]
-    else:
-        pair_list = folder / "pairs.txt"
-        pair_list.write_text("".join(f"{names[a]} {names[b]}\n" for a, b in pairs))
-        argv = [args.colmap, "matches_importer", "--database_path", scratch, "--match_list_path", pair_list,
-                "--match_type", "pairs"]
+    argv = rb.colmap_verification_argv(args.colmap, scratch, folder / "pairs.txt")
     argv += ["--SiftMatching.use_gpu", "0", "--SiftMatching.num_threads", "1"]
     stage = rb.run_stage("colmap verify", argv, folder / "colmap_verify.log", args.timeout, rb.colmap_env())
     if stage["rc"] != 0:
@@ -133,16 +125,24 @@ def edge_verdicts(synth, result_dir):
     return counts
 
 
+def engine_label(args, engine):
+    """The engine's name in results and folders: ours with the variant's --label appended."""
+    return engine + (f"+{args.label}" if args.label and engine != "colmap" else "")
+
+
+def with_scene_draws(row, family):
+    """The row with the scene's drawn geometry and realised unique share (synthetic_scene.json)."""
+    row["geometry"] = family.get("labels", {}).get("geometry")
+    row["unique_share"] = family.get("values", {}).get("unique_share")
+    return row
+
+
 def run_engine(args, prunesfm, scene, synth, input_path, database, engine):
-    label = engine + (f"+{args.label}" if args.label and engine != "colmap" else "")
+    label = engine_label(args, engine)
     out = Path(args.work) / scene["key"] / input_path / label
     result_path = out / "result.json"
     if result_path.is_file() and not args.fresh:
-        result = json.loads(result_path.read_text())
-        if "edges" not in result:  # a result written before the edge verdicts were recorded
-            result["edges"] = edge_verdicts(synth, out / "result")
-            result_path.write_text(json.dumps(result, indent=1) + "\n")
-        return result
+        return json.loads(result_path.read_text())
     if out.exists():
         shutil.rmtree(out)
     out.mkdir(parents=True)
@@ -182,13 +182,9 @@ def cached_rows(args, scene):
     rows = []
     for input_path in args.inputs.split(","):
         for engine in args.engines.split(","):
-            label = engine + (f"+{args.label}" if args.label and engine != "colmap" else "")
-            result_path = folder / input_path / label / "result.json"
+            result_path = folder / input_path / engine_label(args, engine) / "result.json"
             if result_path.is_file():
-                row = json.loads(result_path.read_text())
-                row["geometry"] = family.get("labels", {}).get("geometry")
-                row["unique_share"] = family.get("values", {}).get("unique_share")
-                rows.append(row)
+                rows.append(with_scene_draws(json.loads(result_path.read_text()), family))
     return rows
 
 
@@ -204,9 +200,7 @@ def run_scene(args, prunesfm, scene):
         for engine in engines:
             if (engine == "colmap" and input_path != "colmap") or (engine in ORACLES and input_path != "own"):
                 continue
-            row = run_engine(args, prunesfm, scene, synth, input_path, database, engine)
-            row["geometry"] = family.get("labels", {}).get("geometry")
-            row["unique_share"] = family.get("values", {}).get("unique_share")
+            row = with_scene_draws(run_engine(args, prunesfm, scene, synth, input_path, database, engine), family)
             rows.append(row)
             print(f"{scene['key']} {input_path} {row['engine']}: AUC@10 {row['auc']['10']:.1f} "
                   f"({row['registered']}/{row['num_views']}, {row['seconds']:.0f} s)", flush=True)

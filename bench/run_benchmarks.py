@@ -246,6 +246,19 @@ def colmap_database_pairs(db_path):
     return names, pairs
 
 
+def colmap_verification_argv(colmap, db, pair_list):
+    """COLMAP 3.8's command that verifies the putative matches a synthetic database holds (its
+    matchers keep a pair's existing matches and only verify them): exhaustive_matcher when every
+    pair is there, else matches_importer with the pairs written to `pair_list` (exhaustive would
+    match all N^2 pairs of a sequential scene)."""
+    names, pairs = colmap_database_pairs(db)
+    n = len(names)
+    if len(pairs) == n * (n - 1) // 2:
+        return [colmap, "exhaustive_matcher", "--database_path", db]
+    Path(pair_list).write_text("".join(f"{names[a]} {names[b]}\n" for a, b in pairs))
+    return [colmap, "matches_importer", "--database_path", db, "--match_list_path", pair_list, "--match_type", "pairs"]
+
+
 def num_verified_pairs(db_path):
     """Pairs with inliers in two_view_geometries, 0 unless every matched pair has been verified (an
     interrupted COLMAP run is not reused) or if the database is missing."""
@@ -394,15 +407,7 @@ def run_colmap(args, prunesfm, colmap, scene, work):
     if scene["kind"] == "synthetic" and previous_match is None:
         # The database holds putative matches but no two-view geometries. COLMAP 3.8's matchers keep
         # the matches of a pair that already has them and only verify them geometrically.
-        names, pairs = colmap_database_pairs(db)
-        n = len(names)
-        if len(pairs) == n * (n - 1) // 2:
-            argv = [colmap, "exhaustive_matcher", "--database_path", db]
-        else:  # sequential_large: only the putative pairs (exhaustive would match all N^2 pairs)
-            pair_list = out / "pairs.txt"
-            pair_list.write_text("".join(f"{names[a]} {names[b]}\n" for a, b in pairs))
-            argv = [colmap, "matches_importer", "--database_path", db, "--match_list_path", pair_list,
-                    "--match_type", "pairs"]
+        argv = colmap_verification_argv(colmap, db, out / "pairs.txt")
         stages.append(run_stage("match", argv + ["--SiftMatching.use_gpu", "0", "--SiftMatching.num_threads", t],
                                 out / "match.log", args.timeout, colmap_env()))
         if stages[-1]["rc"] != 0:
