@@ -68,7 +68,6 @@ CONFIGS = [
     (f"without {what} (session 29)", "GLOBAL_PRUNED", off) for what, off in [
         ("the precise verification", ["--verification_precision_ratio", "0"]),
         ("the extra positioning starts", ["--positioning_random_starts", "1"]),
-        ("the distinctive witness", ["--prune_distinctive_witness", "0"]),
         ("the model audit", ["--prune_model_audit", "false"]),
         ("bisection of unsplittable communities", ["--prune_bisect_unsplittable", "false"]),
         ("the baseline-ratio test", ["--prune_baseline_ratio_factor", "0"]),
@@ -79,8 +78,7 @@ CONFIGS = [
     ("the audit's full solves (session 28)", "GLOBAL_PRUNED",
      ["--prune_audit_model", "full", "--prune_audit_refine_final", "false"]),
     ("the defaults before session 29", "GLOBAL_PRUNED",
-     ["--verification_precision_ratio", "0", "--positioning_random_starts", "1", "--prune_distinctive_witness", "0",
-      "--prune_model_audit", "false", "--prune_bisect_unsplittable", "false", "--prune_baseline_ratio_factor", "0",
+     ["--verification_precision_ratio", "0", "--positioning_random_starts", "1", "--prune_model_audit", "false", "--prune_bisect_unsplittable", "false", "--prune_baseline_ratio_factor", "0",
       "--prune_trust_prior_edges", "0", "--prune_landmark_check_deg", "0"]),
 ]
 

@@ -32,8 +32,7 @@ DEFAULT_VARIANTS = [
 ]
 SYNTHETIC_VARIANTS = [
     "defaults=",
-    "street configuration=--positioning_tracks MATCH_STARS --max_epipolar_error_deg 0.08 "
-    "--prune_distinctive_witness 0.5 --prune_model_audit true",
+    "street configuration=--positioning_tracks MATCH_STARS --max_epipolar_error_deg 0.08 --prune_model_audit true",
 ]
 
 

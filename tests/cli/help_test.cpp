@@ -48,7 +48,6 @@ TEST(Cli, ModelAuditIsOfferedOnlyWhereTheGraphIsSolved) {
   const CommandResult run = RunPrunesfm({"run", "--help"});
   EXPECT_EQ(run.exit_code, 0);
   EXPECT_NE(run.out.find("--prune_model_audit"), std::string::npos);
-  EXPECT_NE(run.out.find("--prune_distinctive_witness"), std::string::npos);
   // The rotation check of unverified pairs is part of the pruning itself, so `prune` offers it too.
   const CommandResult prune_help = RunPrunesfm({"prune", "--help"});
   EXPECT_NE(prune_help.out.find("--prune_unverified_max_rotation_deg"), std::string::npos);

@@ -118,7 +118,7 @@ TEST(CliReconstruct, EpipolarThresholdReachesTheVerification) {
   EXPECT_NE(zero.exit_code, 0);
 }
 
-TEST(CliReconstruct, ModelAuditWitnessRotationAndLandmarkChecksLeaveACleanSceneAlone) {
+TEST(CliReconstruct, ModelAuditRotationAndLandmarkChecksLeaveACleanSceneAlone) {
   // Every edge of a clean scene is true: the audit measures the edges between the subgraphs, finds
   // that the first model transfers nearly all their matches, and changes nothing; no pair turns
   // against the rotations of the rest; the subgraphs' landmarks contradict almost no match.
@@ -126,13 +126,12 @@ TEST(CliReconstruct, ModelAuditWitnessRotationAndLandmarkChecksLeaveACleanSceneA
   const fs::path out = scratch / "out";
   const CommandResult result = RunPrunesfm(
       {"run", "--database", (CleanProject() / "database.db").string(), "--image_path", (scratch / "images").string(),
-       "--output_path", out.string(), "--engine", "GLOBAL_PRUNED", "--prune_distinctive_witness", "0.5",
+       "--output_path", out.string(), "--engine", "GLOBAL_PRUNED",
        "--prune_model_audit", "true", "--prune_unverified_max_rotation_deg", "45", "--prune_landmark_check_deg",
        "5"});
   ASSERT_EQ(result.exit_code, 0) << result.err;
   EXPECT_GE(Auc3(out / "sparse" / "0", scratch), 97.0);
   const nlohmann::json timings = nlohmann::json::parse(std::ifstream(out / "timings.json"));
-  EXPECT_EQ(timings.at("prune_distinctive_witness").get<double>(), 0.5);
   EXPECT_TRUE(timings.at("prune_model_audit").get<bool>());
   EXPECT_EQ(timings.at("prune_unverified_max_rotation_deg").get<double>(), 45.0);
   EXPECT_EQ(timings.at("prune_landmark_check_deg").get<double>(), 5.0);

@@ -7,7 +7,6 @@
 #include "pruning/pruning_test_scene.hpp"
 #include "sfm_pruning/geometry/so3.hpp"
 #include "sfm_pruning/pruning/chained_relative_pose.hpp"
-#include "sfm_pruning/pruning/edge_depth_scale.hpp"
 #include "sfm_pruning/pruning/subgraph_alignment.hpp"
 
 namespace sfm_pruning {
@@ -241,9 +240,6 @@ TEST(SubgraphAlignment, ASelectionIsContestedByARivalTheCoverageDoesNotTellApart
   result.hypotheses[1].ruled_out = true;             // the coverage rules the rival out
   EXPECT_FALSE(SelectionIsContested(result, 0.9));
   result.hypotheses[1].ruled_out = false;
-  result.hypotheses[0].distinctive_witness = true;   // chosen as the witness, not by its size
-  EXPECT_FALSE(SelectionIsContested(result, 0.9));
-  result.hypotheses[0].distinctive_witness = false;
   result.selected_hypothesis = 1;  // 36 won against 38 for another reason; 26 is no near tie
   EXPECT_FALSE(SelectionIsContested(result, 0.8));
   result.selected_hypothesis = -1;
@@ -342,183 +338,6 @@ TEST(SubgraphAlignment, PairsWithFewEdgesFollowTheirPolicy) {
   const SubgraphSolution lone = scene.Solution({12}, Similarity());
   EXPECT_EQ(AlignSubgraphPair(scene.graph, k1, lone, scene.views_and_intrinsics, scene.features).status,
             SubgraphAlignmentStatus::kNoEdges);
-}
-
-// The pair's most distinctive edge as a witness (SubgraphAlignmentOptions::distinctive_witness_ratio)
-// and the one-edge scale it needs (edge_depth_scale.hpp).
-TEST(EdgeDepthScale, OneExactEdgeGivesTheScaleBetweenTheFrames) {
-  PruningTestScene scene = MakePruningTestScene(16, 50, 11);
-  scene.AddExactEdge(3, 8);
-  const Similarity frame_k1 = RandomSimilarity(1, kScaleK1);
-  const SubgraphSolution k1 = scene.Solution(kViewsK1, frame_k1);
-  const SubgraphSolution k2 = scene.Solution(kViewsK2, RandomSimilarity(2, kScaleK2));
-  const Pose j_in_k1 = frame_k1.Apply(scene.poses[8]);  // what an exact PnP gives
-  const std::optional<double> beta = EdgeDepthScale(scene.graph, 3, 8, k1, IndexLandmarksByObservation(k1), j_in_k1,
-                                                    k2, IndexLandmarksByObservation(k2));
-  ASSERT_TRUE(beta.has_value());
-  EXPECT_NEAR(*beta, kTrueBeta, 1e-9);
-
-  // Too few features seen in both frames: no scale.
-  EXPECT_FALSE(EdgeDepthScale(scene.graph, 3, 8, k1, IndexLandmarksByObservation(k1), j_in_k1, k2,
-                              IndexLandmarksByObservation(k2), 51)
-                   .has_value());
-}
-
-// Two true edges that both land on view 8 against six twin edges spread over views 9–14 that
-// agree with each other (the copy of the structure shifted along the arc): the largest consensus
-// is the twins', and no sample of the true edges has a scale. Their inliers are more distinctive
-// (the weights say so: 0.3 per inlier against 0.05), and the most distinctive edge's own depth
-// scale gives the true hypothesis.
-// Distinctive weights giving every edge of `true_edges` the share `true_share` per inlier and every
-// other edge `twin_share`.
-std::map<ViewPair, double> SharesByKind(const ViewGraph& graph, const std::vector<ViewPair>& true_edges,
-                                        double true_share, double twin_share) {
-  std::map<ViewPair, double> weights;
-  graph.ForEachValidEdge([&](const ViewPair& pair, const ViewGraphEdge& edge) {
-    const bool is_true = std::count(true_edges.begin(), true_edges.end(), pair) > 0;
-    weights[pair] = (is_true ? true_share : twin_share) * static_cast<double>(edge.matches.size());
-  });
-  return weights;
-}
-
-// The scene of the witness tests below: the true edges 6-8 and 7-8, the twin edges turned 30° about
-// the vertical, true shares 0.3 per inlier against the twins' 0.05, samples of two edges.
-struct MinorityOnOneView {
-  PruningTestScene scene = MakePruningTestScene(16, 60, 11);
-  const std::vector<ViewPair> true_edges = {{6, 8}, {7, 8}};
-  const std::vector<ViewPair> twin_edges = {{0, 9}, {1, 10}, {2, 11}, {3, 12}, {4, 13}, {5, 14}};
-  Similarity twin;
-  const Similarity frame_k2 = RandomSimilarity(2, kScaleK2);
-  SubgraphSolution k1, k2;
-  std::map<ViewPair, double> weights;
-  SubgraphAlignmentOptions options;
-
-  MinorityOnOneView() {
-    for (const ViewPair& edge : true_edges) scene.AddExactEdge(edge.first, edge.second);
-    twin.rotation = ExpSO3(DegToRad(30.0) * Eigen::Vector3d::UnitZ());
-    for (const ViewPair& edge : twin_edges) scene.AddTwinEdge(edge.first, edge.second, twin);
-    k1 = scene.Solution(kViewsK1, RandomSimilarity(1, kScaleK1));
-    k2 = scene.Solution(kViewsK2, frame_k2);
-    weights = SharesByKind(scene.graph, true_edges, 0.3, 0.05);
-    options.sample_fraction = 0.3;  // samples of two edges
-    options.distinctive_witness_ratio = 0.5;
-  }
-};
-
-TEST(DistinctiveWitness, KeepsAMinorityOfTrueEdgesThatLandOnOneView) {
-  MinorityOnOneView minority;
-  auto& [scene, true_edges, twin_edges, twin, frame_k2, k1, k2, weights, options] = minority;
-
-  const SubgraphAlignmentResult without =
-      AlignSubgraphPair(scene.graph, k1, k2, scene.views_and_intrinsics, scene.features, options);
-  ASSERT_EQ(without.status, SubgraphAlignmentStatus::kAligned);
-  EXPECT_EQ(without.KeptEdges(), twin_edges);
-  EXPECT_EQ(without.RemovedEdges(), true_edges);
-
-  const SubgraphAlignmentResult with =
-      AlignSubgraphPair(scene.graph, k1, k2, scene.views_and_intrinsics, scene.features, options, &weights);
-  ASSERT_EQ(with.status, SubgraphAlignmentStatus::kAligned);
-  EXPECT_EQ(with.KeptEdges(), true_edges);
-  EXPECT_EQ(with.RemovedEdges(), twin_edges);
-  ASSERT_GE(with.selected_hypothesis, 0);
-  const AlignmentHypothesis& selected = with.hypotheses[static_cast<size_t>(with.selected_hypothesis)];
-  EXPECT_TRUE(selected.distinctive_witness);
-  EXPECT_NEAR(selected.distinctive_share, 0.3, 1e-12);
-  EXPECT_NEAR(with.hypotheses[0].distinctive_share, 0.05, 1e-12);  // the twins' consensus
-  EXPECT_NEAR(with.beta, kTrueBeta, 1e-6);
-  EXPECT_TRUE(with.has_frame_transform);
-
-  // Off: the paper's choice.
-  options.distinctive_witness_ratio = 0.0;
-  EXPECT_EQ(AlignSubgraphPair(scene.graph, k1, k2, scene.views_and_intrinsics, scene.features, options, &weights)
-                .KeptEdges(),
-            twin_edges);
-}
-
-// The same minority of true edges, but they share no landmark of k2 through view 8 (k2's solution
-// leaves view 8's observations out), so they have no depth scale of their own; the twin edges do
-// (their copies are k2 landmarks too). A copy's placement keeps j's distance to what it sees, so
-// every edge measures the same ratio of the frames' units: the witness takes the median of the
-// others' depth scales and still gives the true hypothesis (street, seed 5: 73.2 -> 95.3).
-TEST(DistinctiveWitness, BorrowsTheScaleWhenTheMostDistinctiveEdgeHasNone) {
-  MinorityOnOneView minority;
-  auto& [scene, true_edges, twin_edges, twin, frame_k2, k1, k2, weights, options] = minority;
-  for (auto& [id, landmark] : k2.landmarks) landmark.observations.erase(8);
-  // The copies the twin edges' features of j see, as landmarks of k2 observed by j alone.
-  IndexT next_id = static_cast<IndexT>(scene.points.size());
-  for (const ViewPair& edge : twin_edges) {
-    for (const FeatureMatch& match : scene.graph.FindEdge(edge.first, edge.second)->matches) {
-      Landmark& copy = k2.landmarks[next_id++];
-      copy.X = frame_k2.Apply(Eigen::Vector3d(twin.Apply(scene.points[match.i])));
-      copy.observations[edge.second] = Observation{scene.features.at(edge.second).Position(match.j), match.j};
-    }
-  }
-  const SubgraphAlignmentResult result =
-      AlignSubgraphPair(scene.graph, k1, k2, scene.views_and_intrinsics, scene.features, options, &weights);
-  ASSERT_EQ(result.status, SubgraphAlignmentStatus::kAligned);
-  EXPECT_EQ(result.KeptEdges(), true_edges);
-  EXPECT_EQ(result.RemovedEdges(), twin_edges);
-  ASSERT_GE(result.selected_hypothesis, 0);
-  EXPECT_TRUE(result.hypotheses[static_cast<size_t>(result.selected_hypothesis)].distinctive_witness);
-  EXPECT_NEAR(result.beta, kTrueBeta, 1e-6);
-}
-
-// True edges that land on one view and are barely more distinctive than the twins (the share rule
-// alone would keep the twins): the witness's candidate joins RANSAC's before the coverage rule, which
-// rules out the twins (they match a third of what their placed views should see).
-TEST(DistinctiveWitness, JoinsTheCandidatesBeforeTheCoverageRule) {
-  PruningTestScene scene = MakePruningTestScene(16, 60, 11);
-  const std::vector<ViewPair> true_edges = {{5, 8}, {6, 8}, {7, 8}};
-  // As OutnumberedTrueEdges: the copy turned 90° puts j of a twin edge back along the arc, next to i,
-  // where it should see i's landmarks; the twin edges match a third of them.
-  const std::vector<ViewPair> twin_edges = {{0, 9}, {1, 9}, {1, 10}, {2, 10}, {3, 11}, {4, 12}, {5, 13}};
-  for (const ViewPair& edge : true_edges) scene.AddExactEdge(edge.first, edge.second);
-  Similarity twin;
-  twin.rotation = ExpSO3(DegToRad(90.0) * Eigen::Vector3d::UnitZ());
-  for (const ViewPair& edge : twin_edges) scene.AddTwinEdge(edge.first, edge.second, twin, 20);
-  const SubgraphSolution k1 = scene.Solution(kViewsK1, RandomSimilarity(1, kScaleK1));
-  const SubgraphSolution k2 = scene.Solution(kViewsK2, RandomSimilarity(2, kScaleK2));
-  const std::map<ViewPair, double> weights = SharesByKind(scene.graph, true_edges, 0.11, 0.10);
-  SubgraphAlignmentOptions options;
-  options.sample_fraction = 0.3;
-  options.distinctive_witness_ratio = 0.5;
-  const SubgraphAlignmentResult without =
-      AlignSubgraphPair(scene.graph, k1, k2, scene.views_and_intrinsics, scene.features, options);
-  EXPECT_EQ(without.KeptEdges(), twin_edges);
-  const SubgraphAlignmentResult with =
-      AlignSubgraphPair(scene.graph, k1, k2, scene.views_and_intrinsics, scene.features, options, &weights);
-  ASSERT_EQ(with.status, SubgraphAlignmentStatus::kAligned);
-  EXPECT_EQ(with.KeptEdges(), true_edges);
-  ASSERT_EQ(with.hypotheses.size(), 2u);
-  EXPECT_TRUE(with.hypotheses[1].distinctive_witness);
-  EXPECT_EQ(with.selected_hypothesis, 1);
-  EXPECT_LT(with.hypotheses[0].coverage_score, 0.0);  // the twins, ruled out by their coverage
-  EXPECT_GT(with.hypotheses[1].coverage_score, 0.0);
-  EXPECT_NEAR(with.beta, kTrueBeta, 1e-6);
-}
-
-// Where the selected consensus already contains the most distinctive edge nothing changes.
-TEST(DistinctiveWitness, AConsensusWithTheWitnessStands) {
-  PruningTestScene scene = MakePruningTestScene(16, 50, 11);
-  for (const ViewPair& edge : std::vector<ViewPair>{{0, 8}, {1, 9}, {2, 10}, {3, 11}, {4, 12}}) {
-    scene.AddExactEdge(edge.first, edge.second);
-  }
-  const SubgraphSolution k1 = scene.Solution(kViewsK1, RandomSimilarity(1, kScaleK1));
-  const SubgraphSolution k2 = scene.Solution(kViewsK2, RandomSimilarity(2, kScaleK2));
-  std::map<ViewPair, double> weights;
-  double share = 0.05;
-  scene.graph.ForEachValidEdge([&](const ViewPair& pair, const ViewGraphEdge& edge) {
-    weights[pair] = share * static_cast<double>(edge.matches.size());
-    share *= 2.0;  // one edge far more distinctive than the others
-  });
-  SubgraphAlignmentOptions options;
-  options.distinctive_witness_ratio = 0.5;
-  const SubgraphAlignmentResult result =
-      AlignSubgraphPair(scene.graph, k1, k2, scene.views_and_intrinsics, scene.features, options, &weights);
-  ASSERT_EQ(result.status, SubgraphAlignmentStatus::kAligned);
-  EXPECT_EQ(result.KeptEdges().size(), 5u);
-  EXPECT_EQ(result.hypotheses.size(), 1u);
-  EXPECT_FALSE(result.hypotheses[0].distinctive_witness);
 }
 
 }  // namespace

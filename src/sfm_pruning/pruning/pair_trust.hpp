@@ -39,10 +39,6 @@ class PairTrust {
   // see. -1 when none of them expected anything (or nothing inside did).
   double RelativeCoverageOf(const SubgraphAlignmentResult& alignment, bool all_edges) const;
 
-  // DistinctiveMatchWeights of `graph` (for every measure: the inter-subgraph alignment's witness
-  // uses them too, SubgraphAlignmentOptions::distinctive_witness_ratio).
-  const std::map<ViewPair, double>& EdgeWeights() const { return edge_weights_; }
-
   // What the edges inside the subgraphs show: the unit of the trust (0 when not measured).
   double ReferenceShare() const { return reference_share_; }
   double ReferenceCoverage() const { return reference_coverage_; }

@@ -7,7 +7,6 @@
 #include <random>
 
 #include "sfm_pruning/geometry/so3.hpp"
-#include "sfm_pruning/pruning/edge_depth_scale.hpp"
 #include "sfm_pruning/pruning/ransac_samples.hpp"
 
 namespace sfm_pruning {
@@ -25,13 +24,6 @@ struct Hypothesis {
 struct EdgeCoverage {
   size_t expected = 0;
   size_t matched = 0;
-};
-
-// What a voting edge shows besides its chained pose (Options::distinctive_witness_ratio).
-struct EdgeDistinctiveness {
-  double weight = 0.0;   // DistinctiveMatchWeights
-  double inliers = 0.0;  // its inlier matches
-  std::optional<double> depth_scale;  // EdgeDepthScale
 };
 
 struct Deviation {
@@ -116,14 +108,13 @@ struct Candidate {
   Hypothesis hypothesis;
   Consensus consensus;  // over every voting edge
   int iteration = -1;
-  int num_samples = 0;      // of its RANSAC run (0: the witness's candidate)
+  int num_samples = 0;      // of its RANSAC run
   bool enumerated = false;  // that run tried every sample (RansacSamples)
 };
 
-// Refit on the whole consensus while it grows, at most `rounds` times (Options::refine_rounds for a
-// RANSAC winner) and, when `keep` is given, while the consensus still holds that edge (the witness).
-void RefineOnConsensus(const std::vector<ChainedRelativePose>& chains, const Options& options, int rounds,
-                       std::optional<size_t> keep, Candidate* candidate) {
+// Refit on the whole consensus while it grows, at most Options::refine_rounds times.
+void RefineOnConsensus(const std::vector<ChainedRelativePose>& chains, const Options& options, Candidate* candidate) {
+  const int rounds = options.refine_rounds;
   for (int round = 0; round < rounds; ++round) {
     std::vector<size_t> members;
     for (size_t k = 0; k < chains.size(); ++k) {
@@ -132,7 +123,7 @@ void RefineOnConsensus(const std::vector<ChainedRelativePose>& chains, const Opt
     const std::optional<Hypothesis> refit = FitHypothesis(chains, members, options);
     if (!refit) return;
     Consensus consensus = CountConsensus(chains, *refit, options);
-    if (consensus.count <= candidate->consensus.count || (keep && !consensus.inlier[*keep])) return;
+    if (consensus.count <= candidate->consensus.count) return;
     candidate->hypothesis = *refit;
     candidate->consensus = std::move(consensus);
   }
@@ -163,7 +154,7 @@ std::optional<Candidate> RansacOverPool(const std::vector<ChainedRelativePose>& 
   if (best) {
     best->num_samples = samples.size();
     best->enumerated = samples.enumerated();
-    RefineOnConsensus(chains, options, options.refine_rounds, std::nullopt, &*best);
+    RefineOnConsensus(chains, options, &*best);
   }
   return best;
 }
@@ -232,81 +223,13 @@ bool ApplyRotationOnlyConsensus(const std::vector<ChainedRelativePose>& chains,
   return true;
 }
 
-// Σ weight / Σ inliers over the consensus edges; -1 when nothing is known.
-double ConsensusShare(const Consensus& consensus, const std::vector<EdgeDistinctiveness>& distinctiveness) {
-  double weight = 0.0;
-  double inliers = 0.0;
-  for (size_t k = 0; k < distinctiveness.size(); ++k) {
-    if (!consensus.inlier[k]) continue;
-    weight += distinctiveness[k].weight;
-    inliers += distinctiveness[k].inliers;
-  }
-  return inliers > 0.0 ? weight / inliers : -1.0;
-}
-
-// The median depth scale of the voting edges that have one. Every edge measures the same ratio of
-// the two frames' units, a twin edge too: placing j by a copy keeps j's distance to what it sees
-// (street, seed 0: the twins' scales 1.288-1.293, the true edge's 1.285).
-std::optional<double> MedianDepthScale(const std::vector<EdgeDistinctiveness>& distinctiveness) {
-  std::vector<double> scales;
-  for (const EdgeDistinctiveness& edge : distinctiveness) {
-    if (edge.depth_scale && *edge.depth_scale > 0.0) scales.push_back(*edge.depth_scale);
-  }
-  if (scales.empty()) return std::nullopt;
-  const auto middle = scales.begin() + static_cast<std::ptrdiff_t>(scales.size() / 2);
-  std::nth_element(scales.begin(), middle, scales.end());
-  return *middle;
-}
-
-// The most distinctive voting edge (the first on ties) with the scale of its candidate: its own
-// depth scale, else the median of the others' (a true edge onto a two-view subgraph often shares
-// fewer than min_correspondences landmarks with it: street, seed 5, 5-7 and 6-7, shares 0.16 and
-// 0.17 against the twins' 0.05, had none). Empty when no voting edge has a depth scale.
-struct Witness {
-  size_t edge = 0;
-  double scale = 0.0;
-};
-std::optional<Witness> MostDistinctiveEdge(const std::vector<EdgeDistinctiveness>& distinctiveness) {
-  const std::optional<double> median_scale = MedianDepthScale(distinctiveness);
-  if (!median_scale) return std::nullopt;
-  std::optional<Witness> best;
-  double best_share = -1.0;
-  for (size_t k = 0; k < distinctiveness.size(); ++k) {
-    const EdgeDistinctiveness& edge = distinctiveness[k];
-    if (!(edge.inliers > 0.0)) continue;
-    const double share = edge.weight / edge.inliers;
-    if (share > best_share) {
-      const bool own = edge.depth_scale && *edge.depth_scale > 0.0;
-      best = Witness{k, own ? *edge.depth_scale : *median_scale};
-      best_share = share;
-    }
-  }
-  return best;
-}
-
-// The hypothesis of edge `witness` alone (its chained pose at its depth scale), refitted on its
-// consensus while that grows and keeps the witness (Options::distinctive_witness_ratio).
-Candidate WitnessCandidate(const std::vector<ChainedRelativePose>& chains, size_t witness, double depth_scale,
-                           const Options& options) {
-  Candidate candidate;
-  candidate.hypothesis.beta = depth_scale;
-  candidate.hypothesis.mean_rotation = chains[witness].rotation;
-  candidate.hypothesis.mean_log_rotation = LogSO3(chains[witness].rotation);
-  candidate.hypothesis.mean_translation = chains[witness].Translation(depth_scale);
-  candidate.consensus = CountConsensus(chains, candidate.hypothesis, options);
-  constexpr int kRefineRounds = 3;
-  RefineOnConsensus(chains, options, kRefineRounds, witness, &candidate);
-  return candidate;
-}
-
 // Runs RANSAC over the voting edges and writes the verdicts of the voters into `result`.
 // kLargestConsensus keeps the first run's winner (the paper). kMatchCoverage runs RANSAC again on
 // the edges outside every consensus found so far (up to max_hypotheses candidates) and keeps the
 // largest candidate that its coverage score does not rule out (the largest of all if it rules out
 // every one).
 void RunRansac(const std::vector<ChainedRelativePose>& chains, const std::vector<EdgeCoverage>& coverage,
-               const std::vector<EdgeDistinctiveness>& distinctiveness, const std::vector<size_t>& voter_edge_index,
-               const Options& options, SubgraphAlignmentResult* result) {
+               const std::vector<size_t>& voter_edge_index, const Options& options, SubgraphAlignmentResult* result) {
   const size_t n = chains.size();
   std::mt19937_64 rng(options.seed);
   std::vector<size_t> pool(n);
@@ -331,18 +254,8 @@ void RunRansac(const std::vector<ChainedRelativePose>& chains, const std::vector
   }
   const bool supported = std::any_of(candidates.begin(), candidates.end(),
                                      [](const Candidate& c) { return c.consensus.count > 0; });
-  const std::optional<Witness> witness =
-      options.distinctive_witness_ratio > 0.0 ? MostDistinctiveEdge(distinctiveness) : std::nullopt;
-  // No sample made a hypothesis any edge supports (e.g. every edge lands on one view), but the most
-  // distinctive edge has a scale (its own or the others' median): its hypothesis decides, before the
-  // rotation alone.
-  const bool witness_decides = !supported && witness.has_value();
-  const Witness witness_choice = witness.value_or(Witness{});  // (value_or: GCC 12 warns on *witness below)
-  const size_t witness_edge = witness_choice.edge;
-  if (witness_decides) {
-    candidates.assign(1, WitnessCandidate(chains, witness_edge, witness_choice.scale, options));
-  } else if (!supported && options.rotation_only_fallback &&
-             ApplyRotationOnlyConsensus(chains, voter_edge_index, options, result)) {
+  if (!supported && options.rotation_only_fallback &&
+      ApplyRotationOnlyConsensus(chains, voter_edge_index, options, result)) {
     return;
   }
   if (candidates.empty()) {
@@ -350,25 +263,12 @@ void RunRansac(const std::vector<ChainedRelativePose>& chains, const std::vector
     ApplyPolicyToVoters(result, InterSubgraphVerdict::kUnjudged, true);
     return;
   }
-  // The witness's own candidate joins the others when none of them holds it (real street at 0.08°:
-  // the true edges of a pair all land on one view, so RANSAC finds only the twins' candidate, and
-  // the coverage rule has nothing to compare it with).
-  int witness_candidate = witness_decides ? 0 : -1;
-  const bool witness_held = std::any_of(candidates.begin(), candidates.end(), [&](const Candidate& c) {
-    return witness.has_value() && c.consensus.inlier[witness_edge];
-  });
-  if (witness.has_value() && !witness_held) {
-    candidates.push_back(WitnessCandidate(chains, witness_edge, witness_choice.scale, options));
-    witness_candidate = static_cast<int>(candidates.size()) - 1;
-  }
   size_t chosen = 0;
   for (size_t c = 0; c < candidates.size(); ++c) {
     AlignmentHypothesis summary;
     summary.consensus_size = candidates[c].consensus.count;
     summary.beta = candidates[c].hypothesis.beta;
     ScoreCoverage(candidates[c].consensus, coverage, options, &summary);
-    summary.distinctive_share = ConsensusShare(candidates[c].consensus, distinctiveness);
-    summary.distinctive_witness = static_cast<int>(c) == witness_candidate;
     summary.num_samples = candidates[c].num_samples;
     summary.enumerated = candidates[c].enumerated;
     result->hypotheses.push_back(summary);
@@ -395,11 +295,6 @@ void RunRansac(const std::vector<ChainedRelativePose>& chains, const std::vector
     const bool better = ruled_out[chosen] ? (!ruled_out[c] || larger) : (!ruled_out[c] && larger);
     if (better) chosen = c;
   }
-  if (witness_candidate >= 0 && !candidates[chosen].consensus.inlier[witness_edge]) {
-    const auto w = static_cast<size_t>(witness_candidate);
-    const double witness_share = result->hypotheses[w].distinctive_share;
-    if (result->hypotheses[chosen].distinctive_share < options.distinctive_witness_ratio * witness_share) chosen = w;
-  }
   result->selected_hypothesis = static_cast<int>(chosen);
   const std::optional<Hypothesis> best = candidates[chosen].hypothesis;
   const Consensus& best_consensus = candidates[chosen].consensus;
@@ -422,26 +317,6 @@ void RunRansac(const std::vector<ChainedRelativePose>& chains, const std::vector
                            ? InterSubgraphVerdict::kRotationDeviation
                            : InterSubgraphVerdict::kTranslationDeviation;
   }
-}
-
-// The distinctive weight, inlier count and depth scale of the voting edge (i, j); nothing without
-// distinctive weights.
-EdgeDistinctiveness MeasureDistinctiveness(const ViewGraph& graph, const ViewPair& edge, const SubgraphSolution& k1,
-                                           const std::map<ObservationKey, IndexT>& landmarks_k1,
-                                           const Pose& pose_j_in_k1, const SubgraphSolution& k2,
-                                           const std::map<ObservationKey, IndexT>& landmarks_k2,
-                                           const std::map<ViewPair, double>* distinctive_weights) {
-  EdgeDistinctiveness out;
-  if (distinctive_weights == nullptr) return out;
-  const ViewPair key = MakeViewPair(edge.first, edge.second);
-  const auto weight = distinctive_weights->find(key);
-  const ViewGraphEdge* graph_edge = graph.FindEdge(key.first, key.second);
-  if (weight == distinctive_weights->end() || graph_edge == nullptr) return out;
-  out.weight = weight->second;
-  out.inliers = static_cast<double>(graph_edge->matches.size());
-  out.depth_scale =
-      EdgeDepthScale(graph, edge.first, edge.second, k1, landmarks_k1, pose_j_in_k1, k2, landmarks_k2);
-  return out;
 }
 
 }  // namespace
@@ -516,20 +391,16 @@ EdgeInvalidation InterSubgraphInvalidation(const InterSubgraphEdgeDecision& deci
 
 SubgraphAlignmentResult AlignSubgraphPair(const ViewGraph& graph, const SubgraphSolution& k1,
                                           const SubgraphSolution& k2, const SfmData& views_and_intrinsics,
-                                          const FeaturesPerView& features, const Options& options,
-                                          const std::map<ViewPair, double>* distinctive_weights) {
+                                          const FeaturesPerView& features, const Options& options) {
   SubgraphAlignmentResult result;
   const std::vector<ViewPair> connecting = ConnectingEdges(graph, k1.view_ids, k2.view_ids);
   if (connecting.empty()) return result;
 
   const std::map<ObservationKey, IndexT> landmarks_k1 = IndexLandmarksByObservation(k1);
-  std::map<ObservationKey, IndexT> landmarks_k2;
-  if (distinctive_weights != nullptr) landmarks_k2 = IndexLandmarksByObservation(k2);
   const Pose mean_k1 = SubgraphMeanPose(k1);
   const Pose mean_k2 = SubgraphMeanPose(k2);
   std::vector<ChainedRelativePose> chains;
   std::vector<EdgeCoverage> coverage;
-  std::vector<EdgeDistinctiveness> distinctiveness;
   std::vector<size_t> voter_edge_index;
   for (const ViewPair& edge : connecting) {
     InterSubgraphEdgeDecision decision;
@@ -542,9 +413,6 @@ SubgraphAlignmentResult AlignSubgraphPair(const ViewGraph& graph, const Subgraph
       chains.push_back(ChainRelativePose(mean_k1, decision.placement.pose_j_in_k1, pose_j_in_k2->second, mean_k2,
                                          options.scale_application));
       coverage.push_back({decision.placement.num_expected_landmarks, decision.placement.num_matched_landmarks});
-      distinctiveness.push_back(
-          MeasureDistinctiveness(graph, edge, k1, landmarks_k1, decision.placement.pose_j_in_k1, k2, landmarks_k2,
-                                 distinctive_weights));
       voter_edge_index.push_back(result.edges.size());
     } else {
       decision.verdict = InterSubgraphVerdict::kCannotVote;
@@ -559,7 +427,7 @@ SubgraphAlignmentResult AlignSubgraphPair(const ViewGraph& graph, const Subgraph
                         options.few_edges == Options::FewEdgesPolicy::kKeepAll);
     return result;
   }
-  RunRansac(chains, coverage, distinctiveness, voter_edge_index, options, &result);
+  RunRansac(chains, coverage, voter_edge_index, options, &result);
   if (result.status == SubgraphAlignmentStatus::kAligned &&
       options.scale_application == ScaleApplication::kSubgraphFrame) {
     result.has_frame_transform = true;
@@ -573,12 +441,11 @@ bool SelectionIsContested(const SubgraphAlignmentResult& alignment, double ratio
   if (!(ratio > 0.0) || alignment.selected_hypothesis < 0) return false;
   const std::vector<AlignmentHypothesis>& candidates = alignment.hypotheses;
   const AlignmentHypothesis& selected = candidates[static_cast<size_t>(alignment.selected_hypothesis)];
-  // The witness's candidate was chosen for its distinctiveness, not its size; so was a candidate
-  // the coverage preferred over a larger one (hence rivals larger than the selection do not count).
-  if (selected.distinctive_witness) return false;
+  // A candidate the coverage preferred over a larger one was chosen for a reason (hence rivals
+  // larger than the selection do not count).
   for (size_t h = 0; h < candidates.size(); ++h) {
     const AlignmentHypothesis& rival = candidates[h];
-    if (static_cast<int>(h) == alignment.selected_hypothesis || rival.distinctive_witness) continue;
+    if (static_cast<int>(h) == alignment.selected_hypothesis) continue;
     const bool same_verdict = rival.ruled_out == selected.ruled_out;
     const double size = static_cast<double>(rival.consensus_size);
     const double selected_size = static_cast<double>(selected.consensus_size);

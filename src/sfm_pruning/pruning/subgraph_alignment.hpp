@@ -92,25 +92,6 @@ struct SubgraphAlignmentOptions {
   // (kRotationOnly). Off: the paper, which keeps every voting edge of such a pair.
   bool rotation_only_fallback = true;
 
-  // The pair's most distinctive voting edge as a witness (not in the paper; needs the edges'
-  // distinctive weights, AlignSubgraphPair). Where a pair's true edges are a minority (a street's
-  // thin stretch: 1–3 true edges against a dozen agreeing twin edges) the largest consensus is the
-  // twins', and when the true edges land on one view no sample of them even has a scale. But the
-  // true edges are the most distinctive ones (their inliers include the unique texture; a twin
-  // edge's only the repeated structure, which the views of every copy match): on the synthetic
-  // street every twin edge has a share ≤ 0.062, the true edges of the thin stretches 0.14–0.32.
-  // So e*'s own hypothesis (e* = the pair's most distinctive voting edge; its chained pose at its
-  // depth scale, edge_depth_scale.hpp, or at the median of the other voting edges' depth scales
-  // when it has none, refitted on its consensus while that keeps e*) joins the
-  // RANSAC candidates when none of them holds e*, before the coverage rule chooses; when the chosen
-  // consensus leaves e* out and its edges' distinctive share is below distinctive_witness_ratio
-  // times that of e*'s candidate, the latter decides the pair; and when no sample gives a
-  // hypothesis any edge supports, e*'s decides before the rotation-only fallback. 0: off (the
-  // paper). Measured in docs/pruning.md, "The most distinctive edge as a witness": the street with
-  // stars and a 0.08° verification 52.2 -> 90.5 AUC@10, the other synthetic and real scenes within
-  // 0.6; part of the default repetition configuration since session 29.
-  double distinctive_witness_ratio = 0.5;
-
   // Pairs with fewer voting edges than this are not tested by RANSAC (the paper is silent).
   // With 1–2 votes there is no majority to tell the wrong edge from the right one.
   size_t min_edges_for_ransac = 3;
@@ -173,14 +154,10 @@ struct AlignmentHypothesis {
   size_t expected_landmarks = 0;  // Σ over the consensus edges (EdgePlacement coverage)
   size_t matched_landmarks = 0;
   double coverage_score = 0.0;  // matched − coverage_break_even · expected
-  // Σ distinctive weight / Σ inliers over the consensus edges (-1 without distinctive weights),
-  // and whether the candidate is the most distinctive edge's (Options::distinctive_witness_ratio).
-  double distinctive_share = -1.0;
-  bool distinctive_witness = false;
   // Ruled out by the coverage (below the break-even, or, when every candidate is, relatively to
   // the best one's coverage; or empty beside a supported candidate), as the selection saw it.
   bool ruled_out = false;
-  int num_samples = 0;      // samples its RANSAC run tried (0: the witness's candidate)
+  int num_samples = 0;      // samples its RANSAC run tried
   bool enumerated = false;  // every distinct sample of the run's pool (Options::max_enumerated_samples)
 
   // matched / expected; infinity when nothing was expected (no evidence against the candidate).
@@ -222,22 +199,18 @@ struct SubgraphAlignmentResult {
 EdgeInvalidation InterSubgraphInvalidation(const InterSubgraphEdgeDecision& decision,
                                            const SubgraphAlignmentOptions& options);
 
-// Decides the connecting edges of (k1, k2) in `graph`. `views_and_intrinsics` supplies the views
-// and intrinsics of the j images, `features` their keypoints.
-// `distinctive_weights` (DistinctiveMatchWeights of the graph, or null: no witness) enables
-// Options::distinctive_witness_ratio.
 // Whether the selected candidate won a near tie on consensus size alone: another candidate, no
 // larger and at least `ratio` times its consensus, has the same AlignmentHypothesis::ruled_out
-// verdict, and neither is the distinctive witness's (a witness, or a candidate the coverage
-// preferred, was chosen for a reason). Never with ratio <= 0.
+// verdict (a candidate the coverage preferred was chosen for a reason). Never with ratio <= 0.
 // On a symmetric object the true and the mirrored transform can be found with 38 and 36 edges,
 // both below the break-even (orbit_symmetric, precise verification, seed 4): a coin toss.
 bool SelectionIsContested(const SubgraphAlignmentResult& alignment, double ratio);
 
+// Decides the connecting edges of (k1, k2) in `graph`. `views_and_intrinsics` supplies the views
+// and intrinsics of the j images, `features` their keypoints.
 SubgraphAlignmentResult AlignSubgraphPair(const ViewGraph& graph, const SubgraphSolution& k1,
                                           const SubgraphSolution& k2, const SfmData& views_and_intrinsics,
                                           const FeaturesPerView& features,
-                                          const SubgraphAlignmentOptions& options = {},
-                                          const std::map<ViewPair, double>* distinctive_weights = nullptr);
+                                          const SubgraphAlignmentOptions& options = {});
 
 }  // namespace sfm_pruning

@@ -257,11 +257,8 @@ void PruneViewGraph(const ViewGraphPruningOptions& options, ViewGraph* graph, co
   start = std::chrono::steady_clock::now();
   const std::vector<AcceptedSubgraph>& accepted = out.partition.accepted;
   const std::vector<std::pair<int, int>> pairs = ConnectedSubgraphPairs(*graph, accepted);
-  // Built before the alignment: its distinctive weights serve the alignment's witness too.
   const PairTrust pair_trust(options.link_trust, component_graph, accepted, views_and_intrinsics,
                              options.alignment.placement, options.trust_prior_edges);
-  const std::map<ViewPair, double>* distinctive_weights =
-      options.alignment.distinctive_witness_ratio > 0.0 ? &pair_trust.EdgeWeights() : nullptr;
   std::vector<SubgraphAlignmentResult> alignments(pairs.size());
   ParallelFor(
       pairs.size(), options.num_threads,
@@ -273,8 +270,7 @@ void PruneViewGraph(const ViewGraphPruningOptions& options, ViewGraph* graph, co
         // have none, and then no edge of the pair could vote.
         const bool second_places = s2.landmarks.size() > s1.landmarks.size();
         alignments[p] = AlignSubgraphPair(*graph, second_places ? s2 : s1, second_places ? s1 : s2,
-                                          views_and_intrinsics, features, PairAlignmentOptions(options, num_edges),
-                                          distinctive_weights);
+                                          views_and_intrinsics, features, PairAlignmentOptions(options, num_edges));
         if (second_places) ExpressFromTheFirstSubgraph(&alignments[p]);
       },
       progress, "inter-subgraph pruning");

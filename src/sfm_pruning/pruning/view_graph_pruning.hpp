@@ -63,8 +63,8 @@ struct ViewGraphPruningOptions {
   PairTrustMeasure link_trust = PairTrustMeasure::kDistinctiveShare;
   // kDistinctiveShare of a pair whose RANSAC kept k edges, pulled toward the share of all its
   // connecting edges as if m of them had been kept too: (k·kept + m·all) / (k + m). 0 = off (the
-  // paper ranks no pairs). Why: the witness may keep a pair's single most distinctive edge, and the share of
-  // one edge chosen for being the most distinctive outranks a true consensus of many (street,
+  // paper ranks no pairs). Why: the share of one or two edges is the noisiest, and a
+  // single distinctive edge outranked a true consensus of many (street,
   // seed 7, street configuration: a pair with no true edge, 0.70, above a 28-edge true one, 0.61;
   // docs/pruning.md).
   double trust_prior_edges = 2.0;

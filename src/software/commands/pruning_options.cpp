@@ -127,13 +127,6 @@ void AddPruningOptions(CLI::App* cmd, sfm_pruning::ViewGraphPruningOptions* opti
                     "coverage is below this fraction of the pair's best (0: the largest wins)")
       ->check(CLI::Range(0.0, 1.0))
       ->capture_default_str();
-  group->add_option("--prune_distinctive_witness", alignment.distinctive_witness_ratio,
-                    "The most distinctive edge of a subgraph pair adds its own hypothesis to the RANSAC candidates "
-                    "when none holds it, and replaces a chosen consensus that leaves it out when that consensus's "
-                    "inliers are less distinctive than this fraction of the edge's (0: off; 0.5 is the measured "
-                    "setting; docs/pruning.md)")
-      ->check(CLI::Range(0.0, 1.0))
-      ->capture_default_str();
   group->add_option("--prune_max_rotation_deviation_deg", alignment.max_rotation_deviation_deg,
                     "E_r: rotation deviation of an edge from the RANSAC hypothesis")
       ->check(PositiveValue())

@@ -91,8 +91,6 @@ nlohmann::json PruningReportJson(const sfm_pruning::ViewGraphPruningReport& prun
                             {"matched_landmarks", h.matched_landmarks},
                             {"coverage_score", h.coverage_score},
                             {"ruled_out", h.ruled_out},
-                            {"distinctive_share", h.distinctive_share},
-                            {"distinctive_witness", h.distinctive_witness},
                             {"samples", h.num_samples},
                             {"enumerated", h.enumerated}});
     }

@@ -146,7 +146,6 @@ nlohmann::json TimingsJson(const EngineSettings& settings, const sfm_pruning::Vi
   json["max_epipolar_error_deg"] = settings.max_epipolar_error_deg;
   json["verification_precision_ratio"] = settings.verification_precision_ratio;
   if (settings.engine == "GLOBAL_PRUNED") {
-    json["prune_distinctive_witness"] = settings.pruning.alignment.distinctive_witness_ratio;
     json["prune_model_audit"] = settings.pruning.audit.enabled;
     json["prune_audit_model"] = AuditModelName(settings.pruning.audit.model_schedule);
     json["prune_audit_refine_final"] = settings.pruning.audit.refine_final;
