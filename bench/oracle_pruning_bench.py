@@ -209,8 +209,7 @@ def main():
                      + f" | {cell(row.get('oracle without twin matches GLOBAL'))} |")
         print(f"{label}: {lines[-1]}", flush=True)
     (Path(args.work) / "results.json").write_text(json.dumps(results, indent=2) + "\n")
-    lines += ["", "Reading: where the oracle folds too, the scene is beyond pruning edges (docs/pruning.md, "
-              "\"Repeated structure seen from many places\")."]
+    lines += ["", "Reading: where the oracle folds too, the scene is beyond pruning edges."]
     bs.write_fragment("oracle_pruning", lines)
     return 0
 

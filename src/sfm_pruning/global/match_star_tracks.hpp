@@ -3,7 +3,7 @@
 // Union-find tracks (tracks.hpp) join every match into one component, so a single wrong match
 // between two features of different copies of a repeated texture merges two whole tracks: the
 // views of one copy then observe the point of the other, and a few such matches move whole runs of
-// views by one copy (the synthetic street, docs/pruning.md "What breaks our solve"). A match star
+// views by one copy (the synthetic street). A match star
 // is one (view, feature) and its direct matches only: a wrong match misplaces one observation of
 // one star, so a minority of wrong matches stays a minority in each view, which the positioning's
 // robust loss and rejection rounds can outvote.

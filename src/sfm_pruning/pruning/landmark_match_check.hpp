@@ -6,7 +6,7 @@
 // matches (a facade feature matched to the same feature one module along). They lie close to
 // their epipolar lines, so the verification keeps them, and union-find tracks spread each one over
 // two whole tracks, which folds the final solve even on a graph without a single twin edge
-// (docs/pruning.md, "What breaks our solve"). 177 of the 182 mixed tracks of the street's default
+// (the synthetic street). 177 of the 182 mixed tracks of the street's default
 // model join two or more subgraphs. Inside an accepted subgraph the landmarks are consistent (its
 // solve passed the tests), and the pair's frame transform was verified by the RANSAC and the loop
 // check. Under it, a true match's feature looks at the other subgraph's landmark of its partner; a

@@ -259,7 +259,7 @@ AuditModelNames(), CLI::ignore_case))
       ->capture_default_str();
   group->add_option("--prune_loop_max_cycle_length", loops.max_cycle_length,
                     "Longest cycle of subgraphs the second loop pass judges (below 4: off); on a broken "
-                    "cycle the pair of lowest match coverage is cut")
+                    "cycle the least trusted pair is cut")
       ->capture_default_str();
 }
 
