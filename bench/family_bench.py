@@ -56,6 +56,9 @@ def parse_args(argv):
                         "the oracles GLOBAL@oracle_edges, GLOBAL@oracle_matches (own input only)")
     p.add_argument("--extra", default="", help="extra arguments for every `prunesfm run` (a variant)")
     p.add_argument("--label", default="", help="name of the variant given by --extra (its own result folders)")
+    p.add_argument("--ablation", action="append", default=[], metavar="NAME=FLAGS",
+                   help="also run GLOBAL_PRUNED with FLAGS on the own input (results under GLOBAL_PRUNED+NAME) and "
+                        "report it beside the defaults in the ablation table; repeatable")
     p.add_argument("--jobs", type=int, default=2, help="scenes run at once (each tool on 1 thread)")
     p.add_argument("--timeout", type=int, default=1800, help="seconds per stage")
     p.add_argument("--work", default="/tmp/prunesfm-families")
@@ -64,7 +67,14 @@ def parse_args(argv):
                    help="compute nothing: report the results already in --work (a partial run says how many)")
     p.add_argument("--output", default=None, help="markdown report (default: print only)")
     p.add_argument("--json", default=None, help="every row, machine-readable")
-    return p.parse_args(argv)
+    args = p.parse_args(argv)
+    args.ablations = []
+    for spec in args.ablation:
+        name, sep, flags = spec.partition("=")
+        if not sep or not name or "/" in name:
+            p.error(f"--ablation {spec!r}: expected NAME=FLAGS")
+        args.ablations.append((name, flags))
+    return args
 
 
 def scene_list(args):
@@ -125,9 +135,11 @@ def edge_verdicts(synth, result_dir):
     return counts
 
 
-def engine_label(args, engine):
-    """The engine's name in results and folders: ours with the variant's --label appended."""
-    return engine + (f"+{args.label}" if args.label and engine != "colmap" else "")
+def engine_label(args, engine, ablation=None):
+    """The engine's name in results and folders: ours with the variant's --label (or the ablation's
+    name) appended."""
+    suffix = ablation[0] if ablation else args.label
+    return engine + (f"+{suffix}" if suffix and engine != "colmap" else "")
 
 
 def with_scene_draws(row, family):
@@ -137,8 +149,9 @@ def with_scene_draws(row, family):
     return row
 
 
-def run_engine(args, prunesfm, scene, synth, input_path, database, engine):
-    label = engine_label(args, engine)
+def run_engine(args, prunesfm, scene, synth, input_path, database, engine, ablation=None):
+    label = engine_label(args, engine, ablation)
+    extra = ablation[1] if ablation else args.extra
     out = Path(args.work) / scene["key"] / input_path / label
     result_path = out / "result.json"
     if result_path.is_file() and not args.fresh:
@@ -160,7 +173,7 @@ def run_engine(args, prunesfm, scene, synth, input_path, database, engine):
         stage, model = bs.colmap_mapper(args.colmap, db, images, out, 1, args.timeout, synthetic=True)
     else:
         argv = [prunesfm, "run", "--database", db, "--image_path", images, "--output_path", out / "result",
-                "--engine", engine.split("@")[0], "--num_threads", 1, *args.extra.split()]
+                "--engine", engine.split("@")[0], "--num_threads", 1, *extra.split()]
         stage = rb.run_stage("run", argv, out / "run.log", args.timeout)
         model, _ = rb.largest_model(out / "result" / "sparse")
     evaluation = bs.evaluate_against(prunesfm, model, synth / "ground_truth" / "gt_cameras.txt", out, 0,
@@ -168,7 +181,7 @@ def run_engine(args, prunesfm, scene, synth, input_path, database, engine):
     result = {"scene": scene["key"], "family": scene["family"], "seed": scene["seed"], "split": scene["split"],
               "input": input_path, "engine": label, "seconds": stage["seconds"], "rc": stage["rc"],
               "registered": evaluation["registered"], "num_views": evaluation["num_reference"],
-              "auc": evaluation["auc"], "edges": edge_verdicts(synth, out / "result")}
+              "auc": evaluation["auc"], "edges": edge_verdicts(synth, out / "result"), "extra": extra}
     db.unlink()
     result_path.write_text(json.dumps(result, indent=1) + "\n")
     return result
@@ -185,6 +198,10 @@ def cached_rows(args, scene):
             result_path = folder / input_path / engine_label(args, engine) / "result.json"
             if result_path.is_file():
                 rows.append(with_scene_draws(json.loads(result_path.read_text()), family))
+    for ablation in args.ablations:
+        result_path = folder / "own" / engine_label(args, "GLOBAL_PRUNED", ablation) / "result.json"
+        if "own" in args.inputs.split(",") and result_path.is_file():
+            rows.append(dict(with_scene_draws(json.loads(result_path.read_text()), family), ablation=ablation[0]))
     return rows
 
 
@@ -202,6 +219,14 @@ def run_scene(args, prunesfm, scene):
                 continue
             row = with_scene_draws(run_engine(args, prunesfm, scene, synth, input_path, database, engine), family)
             rows.append(row)
+            print(f"{scene['key']} {input_path} {row['engine']}: AUC@10 {row['auc']['10']:.1f} "
+                  f"({row['registered']}/{row['num_views']}, {row['seconds']:.0f} s)", flush=True)
+        if input_path != "own":
+            continue
+        for ablation in args.ablations:
+            row = with_scene_draws(run_engine(args, prunesfm, scene, synth, input_path, database, "GLOBAL_PRUNED",
+                                              ablation), family)
+            rows.append(dict(row, ablation=ablation[0]))
             print(f"{scene['key']} {input_path} {row['engine']}: AUC@10 {row['auc']['10']:.1f} "
                   f"({row['registered']}/{row['num_views']}, {row['seconds']:.0f} s)", flush=True)
     return rows
@@ -259,6 +284,34 @@ def control_drops(rows):
     return sorted(drops)
 
 
+def ablation_lines(args, rows):
+    """The ablation table: per split and family, GLOBAL_PRUNED at the defaults and each --ablation
+    variant (own input): median / 10th percentile / share >= 95."""
+    names = [name for name, _ in args.ablations]
+    cells = {}
+    for row in rows:
+        if row["input"] != "own" or not (row["engine"] == "GLOBAL_PRUNED" or row.get("ablation") in names):
+            continue
+        column = row.get("ablation", "defaults")
+        cells.setdefault((row["split"], row["family"], column), []).append(row["auc"]["10"])
+    columns = ["defaults", *names]
+    lines = ["### Ablation (own input)", "",
+             "GLOBAL_PRUNED at the defaults and with each variant's flags: AUC@10 median / 10th percentile / share "
+             "of scenes >= 95, on both splits. " +
+             "; ".join(f"`{name}`: `{flags}`" for name, flags in args.ablations) + ".", "",
+             "| split | family | " + " | ".join(columns) + " |", "|---|---|" + "---|" * len(columns)]
+    for split in ("heldout", "dev"):
+        for family in args.families.split(","):
+            row_cells = []
+            for column in columns:
+                values = cells.get((split, family, column))
+                row_cells.append(f"{statistics.median(values):.1f} / {percentile(values, 10):.1f} / "
+                                 f"{100 * sum(v >= 95.0 for v in values) / len(values):.0f} %" if values else "–")
+            if any(c != "–" for c in row_cells):
+                lines.append(f"| {split} | {family} | " + " | ".join(row_cells) + " |")
+    return lines + [""]
+
+
 def markdown(args, argv, prunesfm, rows):
     lines = bs.header_lines("Disambiguation over the scene families", ["python3", "bench/family_bench.py", *argv],
                             prunesfm, args.colmap)
@@ -266,6 +319,8 @@ def markdown(args, argv, prunesfm, rows):
               "the 10th percentile and the share of scenes at or above 90 and 95. Development seeds "
               f"0..{args.per_family - 1}, held-out seeds 100000..{100000 + args.per_family - 1} "
               "(`bench/family_bench.py` says how the split is fixed).", ""]
+    ablated = [row for row in rows if "ablation" in row]
+    rows = [row for row in rows if "ablation" not in row]
     table = summarise(rows)
     for split in ("heldout", "dev"):
         part = [t for t in table if t["split"] == split]
@@ -313,6 +368,8 @@ def markdown(args, argv, prunesfm, rows):
         worst = drops[0]
         lines += [f"Twin-free controls: GLOBAL_PRUNED minus GLOBAL, worst {worst[0]:+.1f} ({worst[1]}, {worst[2]} "
                   f"input), {sum(d < -0.5 for d, _, _ in drops)} of {len(drops)} below -0.5.", ""]
+    if args.ablations:
+        lines += ablation_lines(args, rows + ablated)
     return lines
 
 
