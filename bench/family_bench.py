@@ -205,6 +205,11 @@ def cached_rows(args, scene):
     return rows
 
 
+def print_row(scene, input_path, row):
+    print(f"{scene['key']} {input_path} {row['engine']}: AUC@10 {row['auc']['10']:.1f} "
+          f"({row['registered']}/{row['num_views']}, {row['seconds']:.0f} s)", flush=True)
+
+
 def run_scene(args, prunesfm, scene):
     if args.report_only:
         return cached_rows(args, scene)
@@ -219,16 +224,14 @@ def run_scene(args, prunesfm, scene):
                 continue
             row = with_scene_draws(run_engine(args, prunesfm, scene, synth, input_path, database, engine), family)
             rows.append(row)
-            print(f"{scene['key']} {input_path} {row['engine']}: AUC@10 {row['auc']['10']:.1f} "
-                  f"({row['registered']}/{row['num_views']}, {row['seconds']:.0f} s)", flush=True)
+            print_row(scene, input_path, row)
         if input_path != "own":
             continue
         for ablation in args.ablations:
             row = with_scene_draws(run_engine(args, prunesfm, scene, synth, input_path, database, "GLOBAL_PRUNED",
                                               ablation), family)
             rows.append(dict(row, ablation=ablation[0]))
-            print(f"{scene['key']} {input_path} {row['engine']}: AUC@10 {row['auc']['10']:.1f} "
-                  f"({row['registered']}/{row['num_views']}, {row['seconds']:.0f} s)", flush=True)
+            print_row(scene, input_path, row)
     return rows
 
 

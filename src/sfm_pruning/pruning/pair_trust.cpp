@@ -43,8 +43,8 @@ PairTrust::PairTrust(PairTrustMeasure measure, const ViewGraph& graph, const std
                      const SfmData& views_and_intrinsics, const EdgePlacementOptions& placement, double prior_edges)
     : measure_(measure), prior_edges_(prior_edges), graph_(graph) {
   reference_coverage_ = InsideMatchCoverage(graph, accepted, views_and_intrinsics, placement);
+  if (measure_ == PairTrustMeasure::kMatchCoverage) return;  // the distinctive weights serve the share only
   edge_weights_ = DistinctiveMatchWeights(graph, FeatureDistinctiveness(graph));
-  if (measure_ == PairTrustMeasure::kMatchCoverage) return;
   std::vector<ViewPair> inside;
   for (const EdgeOfSubgraphs& edge : EdgesOfAcceptedSubgraphs(graph, accepted)) {
     if (edge.k_first == edge.k_second) inside.push_back(edge.pair);

@@ -49,7 +49,7 @@ class PairTrust {
   PairTrustMeasure measure_;
   double prior_edges_ = 0.0;
   const ViewGraph& graph_;
-  std::map<ViewPair, double> edge_weights_;  // DistinctiveMatchWeights
+  std::map<ViewPair, double> edge_weights_;  // DistinctiveMatchWeights (kDistinctiveShare only)
   double reference_share_ = 0.0;
   double reference_coverage_ = 0.0;
 };
