@@ -97,13 +97,18 @@ def run_colmap(args, scene, images, out):
             "peak_mb": max(features["peak_mb"], match["peak_mb"])}
 
 
+def run_log(out, engine):
+    """Beside the run folder, not in it: prunesfm writes only into an empty folder or its own output."""
+    return out.parent / f"{out.name}.run_{engine}.log"
+
+
 def run_ours(args, prunesfm, scene, images, intrinsics, out, engine, force):
     argv = [prunesfm, "run", images, out, "--engine", engine, "--num_threads", args.threads, "--seed", args.seed]
     if intrinsics is not None:
         argv += ["--k_file", intrinsics]
     if force:
         argv.append("--force")
-    stage = rb.run_stage(f"prunesfm run {engine}", argv, out / f"run_{engine}.log", args.timeout)
+    stage = rb.run_stage(f"prunesfm run {engine}", argv, run_log(out, engine), args.timeout)
     timings = json.loads((out / "timings.json").read_text()) if stage["rc"] == 0 else None
     return stage, timings
 
@@ -145,7 +150,7 @@ def main():
             if n == 0 and timings and (scene in args.colmap_scenes.split(",") or carried_colmap(scene)):
                 front = sum(row["stages"].get(s, 0.0) for s in ("init", "features", "match"))
                 speed = {"scene": scene, "ours": row["stages"], "ours_front": front,
-                         "ours_inliers": ours_inliers(out / f"run_{engine}.log"), "ours_peak_mb": stage["peak_mb"]}
+                         "ours_inliers": ours_inliers(run_log(out, engine)), "ours_peak_mb": stage["peak_mb"]}
                 colmap = run_colmap(args, scene, images, work / scene / "colmap") \
                     if scene in args.colmap_scenes.split(",") else carried_colmap(scene)
                 if colmap:

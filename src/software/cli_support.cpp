@@ -5,6 +5,8 @@
 #include <cstdio>
 #include <mutex>
 
+#include "sfm_pruning/util/output_folder.hpp"
+
 namespace prunesfm {
 
 sfm_pruning::ProgressCallback TerminalProgressBar() {
@@ -20,6 +22,17 @@ sfm_pruning::ProgressCallback TerminalProgressBar() {
     if (done >= total) std::fputc('\n', stderr);
     std::fflush(stderr);
   };
+}
+
+CLI::Option* AddOverwriteFlag(CLI::App* cmd, bool* overwrite) {
+  return cmd->add_flag("--overwrite", *overwrite,
+                       "Also write into an existing folder that is not empty and is not an earlier prunesfm output "
+                       "(files of the same names are replaced)");
+}
+
+void PrepareOutputFolder(const std::filesystem::path& dir, bool overwrite) {
+  sfm_pruning::CheckOutputFolder(dir, overwrite);
+  sfm_pruning::ClaimOutputFolder(dir);
 }
 
 void Info(const std::string& message) { std::fprintf(stderr, "prunesfm: %s\n", message.c_str()); }

@@ -3,6 +3,7 @@
 #include "sfm_pruning/io/model_io.hpp"
 #include "sfm_pruning/report/json_file.hpp"
 #include "sfm_pruning/util/error.hpp"
+#include "sfm_pruning/util/output_folder.hpp"
 
 namespace sfm_pruning {
 namespace {
@@ -50,6 +51,10 @@ PruningSummary ReadPruningSummary(const fs::path& path) {
 
 RunFolder ReadRunFolder(const fs::path& path) {
   if (!fs::is_directory(path)) throw FileError(path.string(), "not a run folder (no such directory)");
+  if (fs::exists(path / kOutputFolderMarker) && fs::exists(path / "sfm_data.json") &&
+      !fs::exists(path / "timings.json")) {
+    throw FileError(path.string(), "the run that wrote this folder did not finish (no timings.json); run it again");
+  }
   RunFolder run;
   run.path = path;
   if (fs::is_regular_file(path / "sfm_data.json")) {

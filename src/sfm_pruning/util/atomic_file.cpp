@@ -1,11 +1,15 @@
 #include "sfm_pruning/util/atomic_file.hpp"
 
+#include <signal.h>
 #include <unistd.h>
 
+#include <cerrno>
 #include <sstream>
 #include <system_error>
+#include <vector>
 
 #include "sfm_pruning/util/error.hpp"
+#include "sfm_pruning/util/output_folder.hpp"
 
 namespace sfm_pruning {
 namespace fs = std::filesystem;
@@ -26,7 +30,48 @@ void EnsureParentExists(const fs::path& path) {
   if (ec) throw FileError(parent.string(), "cannot create directory: " + ec.message());
 }
 
+// The pid in "<name>.tmp.<pid>" or "<name>.old.<pid>" when `entry` is such a sibling of `name`.
+bool ParseTemporaryPid(const std::string& entry, const std::string& name, const std::string& kind, pid_t* pid) {
+  const std::string prefix = name + "." + kind + ".";
+  if (entry.size() <= prefix.size() || entry.compare(0, prefix.size(), prefix) != 0) return false;
+  long long value = 0;
+  for (size_t k = prefix.size(); k < entry.size(); ++k) {
+    if (entry[k] < '0' || entry[k] > '9' || value > 1000000000LL) return false;
+    value = value * 10 + (entry[k] - '0');
+  }
+  *pid = static_cast<pid_t>(value);
+  return true;
+}
+
+bool ProcessIsRunning(pid_t pid) {
+  if (pid <= 0) return false;
+  if (pid == ::getpid()) return true;
+  return ::kill(pid, 0) == 0 || errno == EPERM;
+}
+
 }  // namespace
+
+void RemoveStaleTemporaries(const fs::path& path) {
+  const fs::path parent = path.parent_path().empty() ? fs::path(".") : path.parent_path();
+  const std::string name = path.filename().string();
+  if (name.empty()) return;
+  std::error_code ec;
+  std::vector<fs::path> stale_tmp, stale_old;
+  for (const fs::directory_entry& entry : fs::directory_iterator(parent, ec)) {
+    const std::string entry_name = entry.path().filename().string();
+    pid_t pid = 0;
+    if (ParseTemporaryPid(entry_name, name, "tmp", &pid) && !ProcessIsRunning(pid)) stale_tmp.push_back(entry.path());
+    if (ParseTemporaryPid(entry_name, name, "old", &pid) && !ProcessIsRunning(pid)) stale_old.push_back(entry.path());
+  }
+  for (const fs::path& tmp : stale_tmp) fs::remove_all(tmp, ec);
+  for (const fs::path& old : stale_old) {
+    if (!fs::exists(path, ec)) {
+      fs::rename(old, path, ec);
+    } else {
+      fs::remove_all(old, ec);
+    }
+  }
+}
 
 void WriteFileAtomically(const fs::path& path, bool binary,
                          const std::function<void(std::ostream&)>& write) {
@@ -53,14 +98,19 @@ void WriteFileAtomically(const fs::path& path, bool binary,
 
 void WriteDirectoryAtomically(const fs::path& dir,
                               const std::function<void(const fs::path&)>& write) {
-  EnsureParentExists(dir);
-  const fs::path tmp = TemporarySibling(dir);
   std::error_code ec;
+  if (fs::exists(dir, ec) && !fs::is_directory(dir, ec)) {
+    throw FileError(dir.string(), "exists and is not a folder; a file is not replaced by a folder");
+  }
+  EnsureParentExists(dir);
+  RemoveStaleTemporaries(dir);
+  const fs::path tmp = TemporarySibling(dir);
   fs::remove_all(tmp, ec);
   fs::create_directories(tmp, ec);
   if (ec) throw FileError(tmp.string(), "cannot create directory: " + ec.message());
   try {
     write(tmp);
+    ClaimOutputFolder(tmp);
     fs::path old;
     if (fs::exists(dir)) {
       old = dir;

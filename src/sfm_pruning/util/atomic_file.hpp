@@ -18,8 +18,16 @@ void WriteFileAtomically(const std::filesystem::path& path, bool binary,
 
 // Writes a whole directory atomically: `write` fills a temporary sibling directory, which then
 // replaces `dir` (an existing `dir` is moved aside and deleted only after the rename succeeded).
+// The new directory carries the output-folder marker (output_folder.hpp). Leftovers of an
+// interrupted earlier write of `dir` are cleaned first (RemoveStaleTemporaries). Throws Error
+// when `dir` is an existing file: a file is never replaced by a folder.
 void WriteDirectoryAtomically(const std::filesystem::path& dir,
                               const std::function<void(const std::filesystem::path&)>& write);
+
+// Cleans what an interrupted write of `path` left beside it: "<path>.tmp.<pid>" of a process that
+// no longer runs is removed; "<path>.old.<pid>" (the previous version, moved aside just before the
+// new one was to move in) is moved back when `path` is missing and removed otherwise.
+void RemoveStaleTemporaries(const std::filesystem::path& path);
 
 // Reads a whole file into a string; throws Error naming the file when it cannot be opened.
 std::string ReadFileToString(const std::filesystem::path& path, bool binary = true);

@@ -4,6 +4,8 @@
 #include <CLI/CLI.hpp>
 
 #include "sfm_pruning/io/model_io.hpp"
+#include "sfm_pruning/util/error.hpp"
+#include "sfm_pruning/util/output_folder.hpp"
 #include "software/cli_support.hpp"
 #include "software/commands.hpp"
 
@@ -14,9 +16,14 @@ struct ConvertArguments {
   std::string input;
   std::string output;
   std::string output_type = "BIN";
+  bool overwrite = false;
 };
 
 void RunConvert(const ConvertArguments& args) {
+  if (args.output.empty()) throw sfm_pruning::Error("convert: the output path is empty");
+  if (sfm_pruning::OutputModelFormat(args.output) == sfm_pruning::ModelFormat::kColmapModel) {
+    sfm_pruning::CheckOutputFolder(args.output, args.overwrite);
+  }
   const sfm_pruning::SfmData data = sfm_pruning::ReadModel(args.input);
   sfm_pruning::ModelWriteOptions options;
   options.colmap_text = args.output_type == "TXT";
@@ -40,6 +47,7 @@ void AddConvertCommand(CLI::App& app) {
   cmd->add_option("--output_type", args->output_type, "COLMAP folder encoding: BIN or TXT")
       ->check(CLI::IsMember({"BIN", "TXT"}))
       ->capture_default_str();
+  AddOverwriteFlag(cmd, &args->overwrite);
   cmd->callback([args]() { RunConvert(*args); });
 }
 

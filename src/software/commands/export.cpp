@@ -12,6 +12,7 @@
 #include "sfm_pruning/io/openmvg_sfm_data.hpp"
 #include "sfm_pruning/io/ply.hpp"
 #include "sfm_pruning/util/error.hpp"
+#include "sfm_pruning/util/output_folder.hpp"
 #include "software/cli_checks.hpp"
 #include "software/cli_support.hpp"
 #include "software/commands.hpp"
@@ -30,6 +31,7 @@ struct ExportArguments {
   bool keep_all_pixels = false;
   int jpeg_quality = 95;
   int num_threads = 1;
+  bool overwrite = false;
 };
 
 // The formats that need the images: undistortion and colour sampling.
@@ -47,7 +49,12 @@ void RequireExtension(const ExportArguments& args, std::initializer_list<const c
   throw Error(args.output + ": --format " + args.format + " writes a file ending in " + list);
 }
 
+bool WritesFolder(const std::string& format) {
+  return format == "openmvs" || format == "colmap-undistorted" || format == "colmap";
+}
+
 void RunExport(const ExportArguments& args) {
+  if (WritesFolder(args.format)) sfm_pruning::CheckOutputFolder(args.output, args.overwrite);
   sfm_pruning::SfmData data = sfm_pruning::ReadModel(args.model);
   const std::string image_root = args.images.empty() ? data.root_path : args.images;
   if (image_root.empty() && NeedsImages(args.format)) {
@@ -125,6 +132,7 @@ void AddExportCommand(CLI::App& app) {
                   "Threads for reading and undistorting images (output does not depend on it)")
       ->check(PositiveValue())
       ->capture_default_str();
+  AddOverwriteFlag(cmd, &args->overwrite);
   cmd->callback([args]() { RunExport(*args); });
 }
 

@@ -18,11 +18,11 @@
 #include "sfm_pruning/io/ply.hpp"
 #include "sfm_pruning/pruning/view_graph_pruning.hpp"
 #include "sfm_pruning/report/run_view_graph.hpp"
+#include "sfm_pruning/util/atomic_file.hpp"
 #include "sfm_pruning/util/error.hpp"
 #include "software/cli_checks.hpp"
 #include "software/cli_support.hpp"
 #include "software/commands/front_end_stages.hpp"
-#include "software/commands/pruning_options.hpp"
 #include "software/commands/pruning_options.hpp"
 #include "software/commands/pruning_report_json.hpp"
 
@@ -209,13 +209,27 @@ void SilenceSolverLogging() {
   (void)initialized;
 }
 
-void WriteOutputs(const sfm_pruning::SfmData& model, const sfm_pruning::FeaturesPerView& features,
-                  const nlohmann::json& timings, const fs::path& output) {
+// The files of a run folder. timings.json is the run's completion record: it is removed before
+// the first output is written and written after the last, so a folder holding a timings.json
+// holds the outputs of one finished run, and a reader can tell an interrupted one.
+constexpr const char* kRunOutputs[] = {"sfm_data.json", "sparse/0", "cloud_and_poses.ply", "view_graph.json",
+                                       "pruning_report.json", "timings.json"};
+
+// Before a run writes its outputs: cleans what an interrupted earlier run left beside them and
+// withdraws the completion record of the earlier run.
+void BeginOutputs(const fs::path& output) {
+  for (const char* name : kRunOutputs) sfm_pruning::RemoveStaleTemporaries(output / name);
+  std::error_code ec;
+  fs::remove(output / "timings.json", ec);
+  if (ec) throw sfm_pruning::FileError((output / "timings.json").string(), "cannot remove: " + ec.message());
+}
+
+void WriteModelOutputs(const sfm_pruning::SfmData& model, const sfm_pruning::FeaturesPerView& features,
+                       const fs::path& output) {
   fs::create_directories(output / "sparse");
   sfm_pruning::WriteSfmData(model, output / "sfm_data.json");
   sfm_pruning::WriteColmapModel(model, output / "sparse" / "0", sfm_pruning::ColmapModelFormat::kBinary, &features);
   sfm_pruning::WritePly(model, output / "cloud_and_poses.ply");
-  WriteJsonAtomically(timings, output / "timings.json");
 }
 
 sfm_pruning::PositioningMethod Positioning(const EngineSettings& settings) {
@@ -404,10 +418,15 @@ void RunReconstruction(const EngineSettings& settings, const ReconstructionInput
   const std::optional<sfm_pruning::ViewGraphPruningReport>& pruning = solution.pruning;
   const double verify_seconds = solution.verify_seconds;
   if (!report.success) throw Error(input.source + ": reconstruction failed: " + report.message);
+  fs::create_directories(output);
+  BeginOutputs(output);
   if (pruning) {
-    fs::create_directories(output);
     WriteJsonAtomically(PruningReportJson(*pruning), output / "pruning_report.json");
     Info("pruning: " + PruningSummary(*pruning) + "; wrote pruning_report.json");
+  } else {
+    // An earlier GLOBAL_PRUNED run's report would describe a pruning this run did not do.
+    std::error_code ec;
+    fs::remove(output / "pruning_report.json", ec);
   }
 
   nlohmann::json timings =
@@ -438,8 +457,9 @@ void RunReconstruction(const EngineSettings& settings, const ReconstructionInput
     Info("dropped view " + dropped.at("view_id").dump() + " (" + dropped.at("image").get<std::string>() +
          "): " + dropped.at("reason").get<std::string>());
   }
-  WriteOutputs(model, input.features, timings, output);
+  WriteModelOutputs(model, input.features, output);
   sfm_pruning::WriteRunViewGraph(solution.view_graph, output / "view_graph.json");
+  WriteJsonAtomically(timings, output / "timings.json");  // last: the run is complete
   std::string stages;
   for (const auto& stage : timings.at("stages")) {
     char seconds[32];

@@ -25,6 +25,7 @@
 #include "sfm_pruning/io/openmvg_sfm_data.hpp"
 #include "sfm_pruning/util/atomic_file.hpp"
 #include "sfm_pruning/util/error.hpp"
+#include "sfm_pruning/util/output_folder.hpp"
 #include "software/cli_support.hpp"
 #include "software/commands.hpp"
 
@@ -144,9 +145,11 @@ void AddSynthCommand(CLI::App& app) {
   auto* cmd = app.add_subcommand("synth", "Generate a synthetic scene (features, putative matches, ground truth)");
   auto options = std::make_shared<sfm_pruning::SyntheticSceneOptions>();
   auto output = std::make_shared<std::string>();
+  auto overwrite = std::make_shared<bool>(false);
   sfm_pruning::SyntheticSceneOptions& o = *options;
   cmd->add_option("--scene", o.scene, "Scene: a fixed one, or a family_* whose seed draws the whole scene")->required()->check(CLI::IsMember(sfm_pruning::SyntheticSceneNames()));
   cmd->add_option("--output,-o", *output, "Output directory (replaced atomically)")->required();
+  AddOverwriteFlag(cmd, overwrite.get());
   cmd->add_option("--seed", o.seed, "Random seed: same options and seed give identical files");
   cmd->add_option("--num_views", o.num_views, "Number of views (0: scene default)");
   cmd->add_option("--image_width", o.image_width, "Image width in pixels (0: scene default)");
@@ -182,7 +185,8 @@ void AddSynthCommand(CLI::App& app) {
       ->capture_default_str();
   cmd->add_option("--num_threads", o.num_threads, "Threads for matching (the output does not depend on it)")
       ->capture_default_str();
-  cmd->callback([options, output, drawn_by_families]() {
+  cmd->callback([options, output, overwrite, drawn_by_families]() {
+    sfm_pruning::CheckOutputFolder(*output, *overwrite);
     if (sfm_pruning::IsSyntheticFamily(options->scene)) {
       for (const CLI::Option* option : drawn_by_families) {
         if (option->count() > 0) {

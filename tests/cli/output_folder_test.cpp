@@ -1,0 +1,99 @@
+// What the commands do with the folder they are told to write: a folder of the user's is never
+// replaced or mixed into without --overwrite, a file is never turned into a folder, and a run
+// folder holds the outputs of one run.
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <fstream>
+#include <string>
+
+#include "run_prunesfm.hpp"
+#include "support/test_data.hpp"
+
+namespace sfm_pruning::testing {
+namespace {
+namespace fs = std::filesystem;
+
+std::string ReadText(const fs::path& path) {
+  std::ifstream in(path);
+  return std::string(std::istreambuf_iterator<char>(in), {});
+}
+
+CommandResult Synth(const fs::path& out, const std::vector<std::string>& extra = {}) {
+  std::vector<std::string> args = {"synth", "--scene", "clean", "--num_views", "6", "-o", out.string()};
+  args.insert(args.end(), extra.begin(), extra.end());
+  return RunPrunesfm(args);
+}
+
+TEST(CliOutputFolder, AFolderOfTheUsersIsNotReplaced) {
+  const fs::path scratch = ScratchDir("cli_output_user_folder");
+  std::ofstream(scratch / "precious.txt") << "x";
+  const CommandResult synth = Synth(scratch);
+  EXPECT_EQ(synth.exit_code, 1);
+  EXPECT_EQ(CountLines(synth.err), 1) << synth.err;
+  EXPECT_NE(synth.err.find(scratch.string()), std::string::npos) << synth.err;
+  EXPECT_NE(synth.err.find("--overwrite"), std::string::npos) << synth.err;
+  EXPECT_EQ(ReadText(scratch / "precious.txt"), "x");
+
+  ASSERT_EQ(Synth(scratch / "scene").exit_code, 0);
+  for (const std::vector<std::string>& command :
+       {std::vector<std::string>{"convert", "-i", (scratch / "scene" / "sfm_data.json").string(), "-o", scratch.string()},
+        std::vector<std::string>{"export", "-i", (scratch / "scene" / "sfm_data.json").string(), "--format", "colmap",
+                                 "-o", scratch.string()},
+        std::vector<std::string>{"reconstruct", "--sfm_data", (scratch / "scene" / "sfm_data.json").string(),
+                                 "--matches_dir", (scratch / "scene" / "matches").string(), "-o", scratch.string()}}) {
+    const CommandResult result = RunPrunesfm(command);
+    EXPECT_EQ(result.exit_code, 1) << command[0] << ": " << result.err;
+    EXPECT_EQ(ReadText(scratch / "precious.txt"), "x") << command[0];
+  }
+}
+
+TEST(CliOutputFolder, OverwriteIsTheUsersExplicitYes) {
+  const fs::path scratch = ScratchDir("cli_output_overwrite");
+  std::ofstream(scratch / "notes.txt") << "x";
+  const CommandResult result = Synth(scratch, {"--overwrite"});
+  EXPECT_EQ(result.exit_code, 0) << result.err;
+  EXPECT_TRUE(fs::exists(scratch / "sfm_data.json"));
+}
+
+TEST(CliOutputFolder, AFileIsNeverReplacedByAFolderAndAnEmptyPathIsRefused) {
+  const fs::path scratch = ScratchDir("cli_output_file");
+  const fs::path file = scratch / "existing_file.txt";
+  std::ofstream(file) << "keep";
+  for (const bool overwrite : {false, true}) {
+    const CommandResult result = Synth(file, overwrite ? std::vector<std::string>{"--overwrite"}
+                                                       : std::vector<std::string>{});
+    EXPECT_EQ(result.exit_code, 1) << result.err;
+    EXPECT_EQ(CountLines(result.err), 1) << result.err;
+    EXPECT_TRUE(fs::is_regular_file(file));
+    EXPECT_EQ(ReadText(file), "keep");
+  }
+  const CommandResult empty = Synth("");
+  EXPECT_EQ(empty.exit_code, 1) << empty.err;
+  EXPECT_EQ(CountLines(empty.err), 1) << empty.err;
+}
+
+TEST(CliOutputFolder, ARunFolderHoldsTheOutputsOfTheLastRunOnly) {
+  const fs::path scratch = ScratchDir("cli_output_rerun");
+  ASSERT_EQ(Synth(scratch / "scene").exit_code, 0);
+  const auto reconstruct = [&](const std::string& engine) {
+    return RunPrunesfm({"reconstruct", "--engine", engine, "--sfm_data", (scratch / "scene" / "sfm_data.json").string(),
+                        "--matches_dir", (scratch / "scene" / "matches").string(), "-o", (scratch / "out").string()});
+  };
+  ASSERT_EQ(reconstruct("GLOBAL_PRUNED").exit_code, 0);
+  ASSERT_TRUE(fs::exists(scratch / "out" / "pruning_report.json"));
+  const CommandResult global = reconstruct("GLOBAL");
+  ASSERT_EQ(global.exit_code, 0) << global.err;
+  EXPECT_FALSE(fs::exists(scratch / "out" / "pruning_report.json"));  // it described the earlier run
+  EXPECT_TRUE(fs::exists(scratch / "out" / "timings.json"));
+
+  // Without its completion record (timings.json, written last) the folder is an interrupted run.
+  fs::remove(scratch / "out" / "timings.json");
+  const CommandResult report =
+      RunPrunesfm({"report", "--run", (scratch / "out").string(), "--output", (scratch / "report.html").string()});
+  EXPECT_EQ(report.exit_code, 1) << report.err;
+  EXPECT_NE(report.err.find("did not finish"), std::string::npos) << report.err;
+}
+
+}  // namespace
+}  // namespace sfm_pruning::testing
