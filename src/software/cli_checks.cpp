@@ -1,5 +1,8 @@
 #include "software/cli_checks.hpp"
 
+#include <cerrno>
+#include <cmath>
+#include <cstdio>
 #include <cstdlib>
 #include <functional>
 #include <string>
@@ -12,8 +15,15 @@ std::string CheckNumber(const std::string& input, const std::function<bool(doubl
   char* end = nullptr;
   const double value = std::strtod(input.c_str(), &end);
   if (input.empty() || end != input.c_str() + input.size()) return "expected a number, got '" + input + "'";
+  if (!std::isfinite(value)) return "expected a finite number, got " + input;
   if (!accept(value)) return std::string("must be ") + wanted + ", got " + input;
   return {};
+}
+
+std::string Format(double value) {
+  char text[32];
+  std::snprintf(text, sizeof(text), "%g", value);
+  return text;
 }
 
 }  // namespace
@@ -28,6 +38,27 @@ CLI::Validator NonNegativeValue() {
   return CLI::Validator(
       [](std::string& input) { return CheckNumber(input, [](double v) { return v >= 0.0; }, "zero or more"); },
       "NONNEGATIVE");
+}
+
+CLI::Validator RangeValue(double min, double max) {
+  const std::string range = "in [" + Format(min) + ", " + Format(max) + "]";
+  return CLI::Validator(
+      [min, max, range](std::string& input) {
+        return CheckNumber(input, [min, max](double v) { return v >= min && v <= max; }, range.c_str());
+      },
+      "NUMBER " + range);
+}
+
+CLI::Validator SeedValue() {
+  return CLI::Validator(
+      [](std::string& input) -> std::string {
+        const bool digits = !input.empty() && input.find_first_not_of("0123456789") == std::string::npos;
+        errno = 0;
+        if (digits) std::strtoull(input.c_str(), nullptr, 10);
+        if (!digits || errno == ERANGE) return "expected a whole number from 0 to 18446744073709551615, got " + input;
+        return {};
+      },
+      "UINT64");
 }
 
 }  // namespace prunesfm

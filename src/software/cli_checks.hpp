@@ -1,6 +1,6 @@
 // Value checks of numeric options. CLI11's PositiveNumber and NonNegativeNumber describe their
 // range with the largest double spelled out (a 309-digit number in the error line); these say the
-// same in words: "--num_threads: must be positive, got 0".
+// same in words: "--num_threads: must be positive, got 0". None accepts NaN or infinity.
 #pragma once
 
 #include <CLI/CLI.hpp>
@@ -12,5 +12,12 @@ CLI::Validator PositiveValue();
 
 // Accepts a number >= 0.
 CLI::Validator NonNegativeValue();
+
+// Accepts a number in [min, max]. Unlike CLI::Range it refuses NaN (every comparison with NaN is
+// false, so a range test written as "below min or above max" lets it through).
+CLI::Validator RangeValue(double min, double max);
+
+// Accepts a seed: a whole number from 0 to 2^64 - 1 (larger ones would wrap around silently).
+CLI::Validator SeedValue();
 
 }  // namespace prunesfm

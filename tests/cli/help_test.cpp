@@ -59,7 +59,15 @@ TEST(Cli, OutOfRangeNumbersSayWhatIsExpectedInOneLine) {
       {{"run", "--num_threads", "0"}, "--num_threads: must be positive, got 0"},
       {{"run", "--positioning_random_starts", "0"}, "--positioning_random_starts"},
       {{"run", "--prune_max_depth", "-1"}, "--prune_max_depth: must be zero or more, got -1"},
-      {{"run", "--prune_louvain_resolution", "abc"}, "expected a number, got 'abc'"}};
+      {{"run", "--prune_louvain_resolution", "abc"}, "expected a number, got 'abc'"},
+      // NaN and infinity pass a test written as "below min or above max"; these do not.
+      {{"run", "--focal", "inf"}, "--focal: expected a finite number, got inf"},
+      {{"run", "--ratio", "nan"}, "--ratio: expected a finite number, got nan"},
+      {{"run", "--prune_sample_fraction", "nan"}, "expected a finite number, got nan"},
+      {{"run", "--seed", "99999999999999999999999"}, "--seed: expected a whole number from 0 to"},
+      {{"run", "--seed", "-1"}, "--seed: expected a whole number from 0 to"},
+      {{"evaluate", "--inlier_threshold_scene_fraction", "-1"},
+       "--inlier_threshold_scene_fraction: must be positive, got -1"}};
   for (const auto& [arguments, message] : cases) {
     std::vector<std::string> argv = arguments;
     for (const char* rest : {"--database", "/nonexistent/database.db", "--image_path", "/nonexistent",

@@ -7,8 +7,10 @@
 #include <opencv2/core.hpp>
 #include <opencv2/imgcodecs.hpp>
 
+#include "sfm_pruning/features/image_decoding.hpp"
 #include "sfm_pruning/features/image_listing.hpp"
 #include "sfm_pruning/io/k_file.hpp"
+#include "sfm_pruning/util/atomic_file.hpp"
 #include "sfm_pruning/util/error.hpp"
 #include "support/test_data.hpp"
 
@@ -51,9 +53,30 @@ TEST(ImageListing, UndecodableImagesAreSkippedWithAReason) {
   EXPECT_EQ(listing.scene.views.at(2).height, 40u);
   ASSERT_EQ(listing.skipped.size(), 2u);
   EXPECT_EQ(listing.skipped[0].filename, "broken.jpg");
-  EXPECT_EQ(listing.skipped[0].reason, "does not decode as an image");
+  EXPECT_EQ(listing.skipped[0].reason, "does not decode (a JPEG cut short: no end-of-image marker)");
   EXPECT_EQ(listing.skipped[1].filename, "empty.png");
   EXPECT_EQ(listing.skipped[1].reason, "empty file");
+}
+
+// libjpeg decodes a JPEG cut short into a picture with grey rows and only warns on stderr; such a
+// file is skipped, while bytes after the end of the image (camera trailers) are allowed.
+TEST(ImageListing, TruncatedJpegsAreSkippedTrailersAllowed) {
+  const fs::path dir = ScratchDir("listing_truncated_jpeg");
+  WriteImage(dir / "whole.jpg", 256, 192);
+  const std::string bytes = ReadFileToString(dir / "whole.jpg");
+  EXPECT_TRUE(JpegIsComplete(bytes));
+  const std::string cut = bytes.substr(0, bytes.size() / 2);
+  EXPECT_FALSE(JpegIsComplete(cut));
+  EXPECT_FALSE(JpegIsComplete(bytes.substr(0, bytes.size() - 2)));  // only the end marker missing
+  std::ofstream(dir / "cut.jpg", std::ios::binary) << cut;
+  std::ofstream(dir / "trailer.jpg", std::ios::binary) << bytes << "TRAILER\xff\xd8 appended data";
+  const ImageListing listing = ListImages(dir, {});
+  ASSERT_EQ(listing.scene.views.size(), 2u);
+  EXPECT_EQ(listing.scene.views.at(0).filename, "trailer.jpg");
+  EXPECT_EQ(listing.scene.views.at(1).filename, "whole.jpg");
+  ASSERT_EQ(listing.skipped.size(), 1u);
+  EXPECT_EQ(listing.skipped[0].filename, "cut.jpg");
+  EXPECT_EQ(listing.skipped[0].reason, "does not decode (a JPEG cut short: no end-of-image marker)");
 }
 
 TEST(ImageListing, GroupsCamerasBySizeAndGuessesTheFocal) {

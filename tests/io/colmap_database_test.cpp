@@ -244,5 +244,51 @@ TEST(ColmapDatabase, RejectsBadFiles) {
   EXPECT_FALSE(fs::exists(dir / "bad.db"));
 }
 
+// Numbers that no camera, keypoint or pair can have are refused where they are read, with the row
+// they are in: a NaN focal would otherwise keep the verification busy for minutes.
+TEST(ColmapDatabase, RejectsImpossibleNumbers) {
+  const fs::path dir = testing::ScratchDir("colmap_database_numbers");
+  ColmapDatabase small;
+  small.sfm_data.intrinsics[1] = CameraIntrinsics::Pinhole(100, 80, 90, 49.5, 39.5);
+  small.sfm_data.views[1] = MakeView(1, 1, "a.png");
+  small.sfm_data.views[2] = MakeView(2, 1, "b.png");
+  small.features[1].keypoints = {{1.f, 2.f, 3.f, 0.5f}, {4.f, 5.f, 1.f, 0.f}};
+  small.features[2].keypoints = {{6.f, 7.f, 2.f, 0.25f}};
+  small.putative[{1, 2}] = {{1, 0}};
+  ColmapTwoViewGeometry geometry;
+  geometry.inliers = {{1, 0}};
+  geometry.config = 2;
+  small.verified[{1, 2}] = geometry;
+  const auto fresh = [&](const std::string& name) {
+    const fs::path path = dir / name;
+    WriteColmapDatabase(small, path);
+    EXPECT_NO_THROW(ReadColmapDatabase(path));
+    return path;
+  };
+  // SIMPLE_PINHOLE params f, cx, cy as doubles; 0x7FF8... is NaN, 0x7FF0... infinity.
+  const std::string nan = "000000000000F87F", inf = "000000000000F07F", one = "000000000000F03F";
+  const std::pair<std::string, std::string> cases[] = {
+      {"UPDATE cameras SET model = 0, params = x'" + nan + one + one + "'", "camera 1: a parameter is not a finite number"},
+      {"UPDATE cameras SET model = 0, params = x'" + inf + one + one + "'", "camera 1: a parameter is not a finite number"},
+      {"UPDATE cameras SET model = 0, params = x'000000000000F0BF" + one + one + "'",
+       "camera 1: focal length must be positive"},
+      {"UPDATE cameras SET width = -5", "camera 1: image size -5x80 is not a real image's"},
+      {"UPDATE cameras SET height = 0", "camera 1: image size 100x0 is not a real image's"},
+      {"UPDATE keypoints SET rows = -1 WHERE image_id = 2", "keypoints of image 2: the row count -1 is negative"},
+      {"UPDATE keypoints SET data = x'0000C07F000000400000404000000000' WHERE image_id = 2",
+       "keypoints of image 2: keypoint 0 is not finite"},
+      {"UPDATE matches SET pair_id = 9223372036854775807", "matches: pair_id 9223372036854775807 is not a pair"},
+      {"UPDATE two_view_geometries SET rows = -5", "inliers: the row count -5 is negative"},
+      {"UPDATE two_view_geometries SET F = x'" + nan + std::string(8 * 16, '0') + "'", "F is not finite"},
+  };
+  int index = 0;
+  for (const auto& [sql, message] : cases) {
+    SCOPED_TRACE(sql);
+    const fs::path path = fresh("case" + std::to_string(index++) + ".db");
+    ExecuteSql(path, sql);
+    ExpectReadError(path, message);
+  }
+}
+
 }  // namespace
 }  // namespace sfm_pruning

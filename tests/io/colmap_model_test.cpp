@@ -6,7 +6,11 @@
 
 #include <cmath>
 #include <fstream>
+#include <functional>
+#include <sstream>
+#include <stdexcept>
 #include <string>
+#include <vector>
 
 #include "sfm_pruning/util/error.hpp"
 #include "support/test_data.hpp"
@@ -229,6 +233,9 @@ TEST(ColmapModel, RejectsBadInput) {
 
   WriteColmapModel(data, dir / "txt", ColmapModelFormat::kText);
   std::ofstream(dir / "txt" / "points3D.txt") << "1 0 0 1 255 255 255 0.5 3 0\n";
+  WriteColmapModel(SfmData{data.root_path, data.views, data.intrinsics, data.poses, {}, {}}, dir / "txt",
+                   ColmapModelFormat::kText);  // images.txt without observations
+  std::ofstream(dir / "txt" / "points3D.txt") << "1 0 0 1 255 255 255 0.5 3 0\n";
   try {
     ReadColmapModel(dir / "txt");
     ADD_FAILURE() << "track to a missing image accepted";
@@ -239,6 +246,62 @@ TEST(ColmapModel, RejectsBadInput) {
   }
   std::ofstream(dir / "txt" / "cameras.txt") << "0 FOV 400 300 350 200 150 0.9\n";
   EXPECT_THROW(ReadColmapModel(dir / "txt"), Error);
+
+  // Records the text files cannot hold: a cut-short file, a repeated id, a reference to nothing,
+  // an impossible camera.
+  const auto expect_error = [&](const fs::path& model, const std::string& text) {
+    try {
+      ReadColmapModel(model);
+      ADD_FAILURE() << "accepted; expected an error mentioning " << text;
+    } catch (const Error& e) {
+      EXPECT_NE(std::string(e.what()).find(text), std::string::npos) << e.what();
+      EXPECT_EQ(std::string(e.what()).find('\n'), std::string::npos) << e.what();
+    }
+  };
+  const auto text_model = [&](const std::string& name) {
+    WriteColmapModel(data, dir / name, ColmapModelFormat::kText);
+    EXPECT_NO_THROW(ReadColmapModel(dir / name));
+    return dir / name;
+  };
+  const auto rewrite = [](const fs::path& file, const std::function<void(std::vector<std::string>*)>& edit) {
+    std::vector<std::string> lines;
+    std::ifstream in(file);
+    for (std::string line; std::getline(in, line);) lines.push_back(line);
+    in.close();
+    edit(&lines);
+    std::ofstream out(file);
+    for (const std::string& line : lines) out << line << "\n";
+  };
+  const auto first_data_line = [](std::vector<std::string>* lines) -> std::string& {
+    for (std::string& line : *lines) {
+      if (!line.empty() && line[0] != '#') return line;
+    }
+    throw std::runtime_error("no data line");
+  };
+  const fs::path truncated = text_model("truncated");
+  rewrite(truncated / "points3D.txt", [](std::vector<std::string>* lines) { lines->pop_back(); });
+  expect_error(truncated, "points3D.txt: the header declares");
+  const fs::path duplicate = text_model("duplicate");
+  rewrite(duplicate / "cameras.txt", [&](std::vector<std::string>* lines) { lines->push_back(first_data_line(lines)); });
+  expect_error(duplicate, "duplicate CAMERA_ID");
+  const fs::path missing_point = text_model("missing_point");
+  rewrite(missing_point / "images.txt", [](std::vector<std::string>* lines) {
+    int data_lines = 0;
+    for (std::string& line : *lines) {
+      if (!line.empty() && line[0] == '#') continue;
+      if (++data_lines == 2) line = "10 20 999999";  // the first image's POINTS2D line
+    }
+  });
+  expect_error(missing_point, "names 3D point 999999, which is not in points3D.txt");
+  const fs::path empty_camera = text_model("empty_camera");
+  rewrite(empty_camera / "cameras.txt", [&](std::vector<std::string>* lines) {
+    std::string& line = first_data_line(lines);
+    std::istringstream tokens(line);
+    std::string id, model, width;
+    tokens >> id >> model >> width;
+    line = id + " " + model + " 0" + line.substr(static_cast<size_t>(tokens.tellg()));
+  });
+  expect_error(empty_camera, "image size 0x");
 
   FeaturesPerView too_few = features;
   too_few[2].keypoints.resize(2);

@@ -2,6 +2,11 @@
 
 #include <gtest/gtest.h>
 
+#include <limits>
+#include <string>
+#include <utility>
+#include <vector>
+
 #include "sfm_pruning/util/error.hpp"
 
 namespace sfm_pruning {
@@ -59,6 +64,68 @@ TEST(SfmData, ValidationRejectsDanglingReferences) {
   SfmData wrong_key = TwoViewScene();
   wrong_key.views[5] = wrong_key.views[0];
   EXPECT_THROW(ValidateSfmData(wrong_key, "scene"), Error);
+}
+
+TEST(SfmData, ValidationRejectsAViewOfAMissingIntrinsic) {
+  SfmData data = TwoViewScene();
+  data.views[1].id_intrinsic = 3;
+  EXPECT_THROW(ValidateSfmData(data, "scene"), Error);
+  data.views[1].id_intrinsic = kUndefinedIndex;  // unknown calibration is allowed
+  EXPECT_NO_THROW(ValidateSfmData(data, "scene"));
+}
+
+// The message of ValidateSfmDataValues on `data`, empty when it passes.
+std::string ValueProblem(const SfmData& data) {
+  try {
+    ValidateSfmDataValues(data, "scene.json");
+  } catch (const Error& e) {
+    return e.what();
+  }
+  return {};
+}
+
+TEST(SfmData, ValidationRejectsNumbersNoCameraOrPointHas) {
+  EXPECT_EQ(ValueProblem(TwoViewScene()), "");
+  const double nan = std::numeric_limits<double>::quiet_NaN();
+  const double inf = std::numeric_limits<double>::infinity();
+  const std::vector<std::pair<CameraIntrinsics, std::string>> cameras = {
+      {CameraIntrinsics::Pinhole(640, 480, nan, 320, 240), "intrinsic 0: a parameter is not a finite number (nan)"},
+      {CameraIntrinsics::Pinhole(640, 480, inf, 320, 240), "intrinsic 0: a parameter is not a finite number (inf)"},
+      {CameraIntrinsics::Pinhole(640, 480, 0, 320, 240), "intrinsic 0: focal length must be positive, got 0"},
+      {CameraIntrinsics::Pinhole(640, 480, -500, 320, 240), "intrinsic 0: focal length must be positive, got -500"},
+      {CameraIntrinsics::Pinhole(640, 480, 1e308, 320, 240), "intrinsic 0: focal length 1e+308 px is over 1000"},
+      {CameraIntrinsics::Pinhole(640, 480, 500, nan, 240), "intrinsic 0: a parameter is not a finite number (nan)"},
+      {CameraIntrinsics::Pinhole(0, 480, 500, 320, 240), "intrinsic 0: image size 0x480 is not a real image's"},
+  };
+  for (const auto& [intrinsics, message] : cameras) {
+    SfmData data = TwoViewScene();
+    data.intrinsics[0] = intrinsics;
+    EXPECT_EQ(ValueProblem(data).rfind("scene.json: " + message, 0), 0u) << ValueProblem(data);
+  }
+  // A 50x telephoto (a 1.1 degree field of view) is a real lens.
+  SfmData telephoto = TwoViewScene();
+  telephoto.intrinsics[0] = CameraIntrinsics::Pinhole(640, 480, 32000, 320, 240);
+  EXPECT_EQ(ValueProblem(telephoto), "");
+
+  SfmData nan_rotation = TwoViewScene();
+  nan_rotation.poses[0].rotation(1, 1) = nan;
+  EXPECT_EQ(ValueProblem(nan_rotation), "scene.json: pose 0: the rotation is not finite");
+  SfmData scaled_rotation = TwoViewScene();
+  scaled_rotation.poses[0].rotation *= 2.0;
+  EXPECT_EQ(ValueProblem(scaled_rotation),
+            "scene.json: pose 0: the rotation is not a rotation matrix (orthonormal, determinant 1)");
+  SfmData reflection = TwoViewScene();
+  reflection.poses[0].rotation(2, 2) = -1.0;
+  EXPECT_NE(ValueProblem(reflection), "");
+  SfmData far_centre = TwoViewScene();
+  far_centre.poses[0].center.x() = inf;
+  EXPECT_EQ(ValueProblem(far_centre), "scene.json: pose 0: the centre is not finite");
+  SfmData nan_point = TwoViewScene();
+  nan_point.structure[0].X.z() = nan;
+  EXPECT_EQ(ValueProblem(nan_point), "scene.json: landmark 0: the position is not finite");
+  SfmData nan_pixel = TwoViewScene();
+  nan_pixel.structure[0].observations[0].x.x() = nan;
+  EXPECT_EQ(ValueProblem(nan_pixel), "scene.json: landmark 0: its observation in view 0 is not a finite pixel");
 }
 
 TEST(View, RelativeImagePath) {

@@ -37,7 +37,9 @@ inline Eigen::Matrix3d DecodeMatrix3(const std::string& blob, const std::string&
                                      const std::string& what) {
   if (blob.empty()) return Eigen::Matrix3d::Zero();
   const std::vector<double> values = DecodeArray<double>(blob, 9, source, what);
-  return Eigen::Map<const Eigen::Matrix<double, 3, 3, Eigen::RowMajor>>(values.data());
+  const Eigen::Matrix3d matrix = Eigen::Map<const Eigen::Matrix<double, 3, 3, Eigen::RowMajor>>(values.data());
+  if (!matrix.allFinite()) throw FileError(source, what + " is not finite");
+  return matrix;
 }
 
 inline std::string EncodeMatrix3(const Eigen::Matrix3d& matrix) {

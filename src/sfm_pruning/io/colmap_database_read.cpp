@@ -9,6 +9,7 @@
 #include "sfm_pruning/io/colmap_database.hpp"
 #include "sfm_pruning/io/colmap_database_blobs.hpp"
 #include "sfm_pruning/io/colmap_sqlite.hpp"
+#include "sfm_pruning/sfm/sfm_data.hpp"
 #include "sfm_pruning/util/error.hpp"
 
 namespace sfm_pruning {
@@ -29,18 +30,26 @@ void ReadCameras(Connection& db, ColmapDatabase* out) {
                               (has_prior_flag ? ", prior_focal_length" : "") + " FROM cameras ORDER BY camera_id");
   while (rows.Step()) {
     const auto camera_id = static_cast<IndexT>(rows.ColumnInt64(0));
+    const std::string name = "camera " + std::to_string(camera_id);
     ColmapCamera camera;
     camera.model_id = static_cast<int>(rows.ColumnInt64(1));
-    camera.width = static_cast<uint64_t>(rows.ColumnInt64(2));
-    camera.height = static_cast<uint64_t>(rows.ColumnInt64(3));
+    const int64_t width = rows.ColumnInt64(2), height = rows.ColumnInt64(3);
+    if (width <= 0 || height <= 0) {
+      throw FileError(db.source(), name + ": image size " + std::to_string(width) + "x" + std::to_string(height) +
+                                       " is not a real image's");
+    }
+    camera.width = static_cast<uint64_t>(width);
+    camera.height = static_cast<uint64_t>(height);
     const std::string blob = rows.ColumnBlob(4);
     const size_t num_params = ColmapCameraNumParams(camera.model_id);
     // Unknown models keep no parameters; FromColmapCamera then names the model in its error.
     if (num_params > 0) {
-      camera.params = DecodeArray<double>(blob, num_params, db.source(),
-                                          "camera " + std::to_string(camera_id) + " params");
+      camera.params = DecodeArray<double>(blob, num_params, db.source(), name + " params");
     }
-    out->sfm_data.intrinsics[camera_id] = FromColmapCamera(camera, db.source());
+    const CameraIntrinsics intrinsics = FromColmapCamera(camera, db.source());
+    const std::string problem = IntrinsicsProblem(intrinsics);
+    if (!problem.empty()) throw FileError(db.source(), name + ": " + problem);
+    out->sfm_data.intrinsics[camera_id] = intrinsics;
     if (has_prior_flag && rows.ColumnInt64(5) == 0) out->intrinsics_with_guessed_focal.insert(camera_id);
   }
 }
@@ -98,14 +107,22 @@ void ReadKeypoints(Connection& db, ColmapDatabase* out) {
     const int64_t num = rows.ColumnInt64(1);
     const int64_t cols = rows.ColumnInt64(2);
     const std::string what = "keypoints of image " + std::to_string(image_id);
-    if (num < 0 || (num > 0 && cols != 2 && cols != 4 && cols != 6)) {
+    if (num < 0) throw FileError(db.source(), what + ": the row count " + std::to_string(num) + " is negative");
+    if (num > 0 && cols != 2 && cols != 4 && cols != 6) {
       throw FileError(db.source(), what + " have " + std::to_string(cols) + " columns, expected 2, 4 or 6");
     }
     const std::vector<float> values =
         DecodeArray<float>(rows.ColumnBlob(3), static_cast<size_t>(num * cols), db.source(), what);
     FeatureSet& features = out->features[image_id];
     features.keypoints.reserve(static_cast<size_t>(num));
-    for (int64_t k = 0; k < num; ++k) features.keypoints.push_back(DecodeKeypoint(&values[k * cols], cols));
+    for (int64_t k = 0; k < num; ++k) {
+      features.keypoints.push_back(DecodeKeypoint(&values[k * cols], cols));
+      const Keypoint& keypoint = features.keypoints.back();
+      if (!std::isfinite(keypoint.x) || !std::isfinite(keypoint.y) || !std::isfinite(keypoint.scale) ||
+          !std::isfinite(keypoint.orientation)) {
+        throw FileError(db.source(), what + ": keypoint " + std::to_string(k) + " is not finite");
+      }
+    }
   }
 }
 
@@ -136,7 +153,8 @@ std::vector<FeatureMatch> DecodeMatches(const Connection& db, const ColmapDataba
                                         const Statement& rows, const ViewPair& pair,
                                         const std::string& what) {
   const int64_t num = rows.ColumnInt64(1);
-  if (num < 0 || rows.ColumnInt64(2) != 2) {
+  if (num < 0) throw FileError(db.source(), what + ": the row count " + std::to_string(num) + " is negative");
+  if (rows.ColumnInt64(2) != 2) {
     throw FileError(db.source(),
                     what + " have " + std::to_string(rows.ColumnInt64(2)) + " columns, expected 2");
   }
@@ -158,6 +176,10 @@ std::vector<FeatureMatch> DecodeMatches(const Connection& db, const ColmapDataba
 }
 
 ViewPair RequirePair(const Connection& db, const ColmapDatabase& out, int64_t pair_id, const char* table) {
+  if (pair_id < 0 || static_cast<uint64_t>(pair_id) / kMaxNumImages >= kMaxNumImages) {
+    throw FileError(db.source(), std::string(table) + ": pair_id " + std::to_string(pair_id) +
+                                     " is not a pair of image ids (id1 * 2147483647 + id2)");
+  }
   const ViewPair pair = ColmapPairFromId(static_cast<uint64_t>(pair_id));
   if (out.sfm_data.views.count(pair.first) == 0 || out.sfm_data.views.count(pair.second) == 0) {
     throw FileError(db.source(), std::string(table) + " row for pair " + std::to_string(pair_id) +
@@ -172,7 +194,7 @@ std::string PairName(const char* what, const ViewPair& pair) {
 
 void ReadMatches(Connection& db, ColmapDatabase* out) {
   Statement rows =
-      db.Prepare("SELECT pair_id, rows, cols, data FROM matches WHERE rows > 0 ORDER BY pair_id");
+      db.Prepare("SELECT pair_id, rows, cols, data FROM matches WHERE rows != 0 ORDER BY pair_id");
   while (rows.Step()) {
     const ViewPair pair = RequirePair(db, *out, rows.ColumnInt64(0), "matches");
     out->putative[pair] = DecodeMatches(db, *out, rows, pair, PairName("matches", pair));
@@ -185,6 +207,9 @@ std::optional<RelativePose> DecodeRelativePose(const Connection& db, const std::
   const std::vector<double> q = DecodeArray<double>(qvec_blob, 4, db.source(), what + " qvec");
   const std::vector<double> t = DecodeArray<double>(tvec_blob, 3, db.source(), what + " tvec");
   const Eigen::Quaterniond quaternion(q[0], q[1], q[2], q[3]);
+  if (!quaternion.coeffs().allFinite() || !std::isfinite(t[0]) || !std::isfinite(t[1]) || !std::isfinite(t[2])) {
+    throw FileError(db.source(), what + ": the relative pose (qvec, tvec) is not finite");
+  }
   if (quaternion.norm() == 0.0) return std::nullopt;  // COLMAP 3.8's "not computed"
   // COLMAP's qvec/tvec map camera-1 to camera-2 coordinates, exactly RelativePose's i -> j.
   return RelativePose(quaternion.normalized().toRotationMatrix(), Eigen::Vector3d(t[0], t[1], t[2]));
@@ -195,7 +220,7 @@ void ReadTwoViewGeometries(Connection& db, ColmapDatabase* out) {
       db.HasColumn("two_view_geometries", "qvec") && db.HasColumn("two_view_geometries", "tvec");
   Statement rows = db.Prepare(std::string("SELECT pair_id, rows, cols, data, config, F, E, H") +
                               (has_pose ? ", qvec, tvec" : "") +
-                              " FROM two_view_geometries WHERE rows > 0 ORDER BY pair_id");
+                              " FROM two_view_geometries WHERE rows != 0 ORDER BY pair_id");
   while (rows.Step()) {
     const ViewPair pair = RequirePair(db, *out, rows.ColumnInt64(0), "two_view_geometries");
     const std::string what = PairName("two-view geometry", pair);

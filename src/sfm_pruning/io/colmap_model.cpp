@@ -40,12 +40,29 @@ SfmData ToSfmData(const Model& model, const fs::path& dir, bool binary) {
   SfmData data;
   for (const auto& [camera_id, camera] : model.cameras) {
     data.intrinsics[camera_id] = FromColmapCamera(camera, cameras_file);
+    const std::string problem = IntrinsicsProblem(data.intrinsics[camera_id]);
+    if (!problem.empty()) throw FileError(cameras_file, "camera " + std::to_string(camera_id) + ": " + problem);
   }
   for (const auto& [image_id, image] : model.images) {
+    const std::string name = "image " + std::to_string(image_id);
     const auto intrinsic = data.intrinsics.find(image.camera_id);
     if (intrinsic == data.intrinsics.end()) {
-      throw FileError(images_file, "image " + std::to_string(image_id) + " refers to missing camera " +
-                                       std::to_string(image.camera_id));
+      throw FileError(images_file, name + " refers to missing camera " + std::to_string(image.camera_id));
+    }
+    if (!image.qvec.allFinite() || !image.tvec.allFinite()) {
+      throw FileError(images_file, name + ": its pose (QVEC, TVEC) is not finite");
+    }
+    if (image.qvec.norm() == 0.0) throw FileError(images_file, name + ": its QVEC is zero, not a rotation");
+    for (size_t k = 0; k < image.points2d.size(); ++k) {
+      const int64_t point3d_id = image.points2d[k].point3d_id;
+      if (!image.points2d[k].xy.allFinite()) {
+        throw FileError(images_file, name + ": point2D " + std::to_string(k) + " is not a finite pixel");
+      }
+      if (point3d_id != kNoPoint3D && (point3d_id < 0 || !model.points3d.count(static_cast<uint64_t>(point3d_id)))) {
+        throw FileError(images_file, name + ": point2D " + std::to_string(k) + " names 3D point " +
+                                         std::to_string(point3d_id) + ", which is not in " +
+                                         (dir / Points3DFile(binary)).filename().string());
+      }
     }
     View view;
     view.id_view = image_id;

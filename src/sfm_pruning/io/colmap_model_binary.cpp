@@ -4,6 +4,7 @@
 #include "sfm_pruning/io/colmap_binary.hpp"
 #include "sfm_pruning/io/colmap_model_records.hpp"
 #include "sfm_pruning/util/atomic_file.hpp"
+#include "sfm_pruning/util/error.hpp"
 
 namespace sfm_pruning::colmap_records {
 namespace fs = std::filesystem;
@@ -11,6 +12,10 @@ using colmap_binary::Reader;
 using colmap_binary::Write;
 
 namespace {
+
+Error Duplicate(const fs::path& path, const char* what, uint64_t id) {
+  return FileError(path.string(), std::string("duplicate ") + what + " id " + std::to_string(id));
+}
 
 void ReadCameras(const fs::path& path, Model* model) {
   const std::string bytes = ReadFileToString(path);
@@ -30,7 +35,7 @@ void ReadCameras(const fs::path& path, Model* model) {
                       "camera model " + ColmapCameraModelName(camera.model_id) + " is not supported");
     }
     for (size_t k = 0; k < num_params; ++k) camera.params.push_back(in.Read<double>());
-    model->cameras[id] = camera;
+    if (!model->cameras.emplace(id, camera).second) throw Duplicate(path, "camera", id);
   }
   if (!in.AtEnd()) throw FileError(path.string(), "unexpected bytes after the last camera");
 }
@@ -55,7 +60,7 @@ void ReadImages(const fs::path& path, Model* model) {
       point.xy.y() = in.Read<double>();
       point.point3d_id = in.Read<int64_t>();
     }
-    model->images[id] = std::move(image);
+    if (!model->images.emplace(id, std::move(image)).second) throw Duplicate(path, "image", id);
   }
   if (!in.AtEnd()) throw FileError(path.string(), "unexpected bytes after the last image");
 }
@@ -78,7 +83,7 @@ void ReadPoints3D(const fs::path& path, Model* model) {
       element.first = in.Read<uint32_t>();
       element.second = in.Read<uint32_t>();
     }
-    model->points3d[id] = std::move(point);
+    if (!model->points3d.emplace(id, std::move(point)).second) throw Duplicate(path, "point3D", id);
   }
   if (!in.AtEnd()) throw FileError(path.string(), "unexpected bytes after the last point");
 }

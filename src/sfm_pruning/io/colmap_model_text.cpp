@@ -2,6 +2,7 @@
 // Doubles are written with 17 significant digits, so a text round trip is exact.
 #include <iomanip>
 #include <limits>
+#include <optional>
 #include <sstream>
 #include <string>
 
@@ -23,9 +24,25 @@ class LineReader {
   bool NextDataLine(std::string* line) {
     while (NextLine(line)) {
       const size_t first = line->find_first_not_of(" \t\r");
-      if (first != std::string::npos && (*line)[first] != '#') return true;
+      if (first == std::string::npos) continue;
+      if ((*line)[first] != '#') return true;
+      ReadDeclaredCount(*line);
     }
     return false;
+  }
+
+  // After the last line: a header that says "# Number of points: N" must match the N records
+  // read, else the file was cut short (or grew by hand).
+  void CheckDeclaredCount(size_t records, const char* what) const {
+    if (declared_count_ && *declared_count_ != records) {
+      throw FileError(path_.string(), "the header declares " + std::to_string(*declared_count_) + " " + what +
+                                          ", the file holds " + std::to_string(records) + " (truncated?)");
+    }
+  }
+
+  // Throws when `id` was already read: COLMAP writes each record once.
+  void RequireNew(bool inserted, const char* what, uint64_t id) const {
+    if (!inserted) throw Fail(std::string("duplicate ") + what + " " + std::to_string(id));
   }
 
   // The very next line, empty or not (the POINTS2D line of an image may be empty).
@@ -48,9 +65,22 @@ class LineReader {
   }
 
  private:
+  // COLMAP's headers: "# Number of cameras: 3", "# Number of images: 5, mean observations ...".
+  void ReadDeclaredCount(const std::string& line) {
+    const std::string key = "Number of ";
+    const size_t at = line.find(key);
+    if (at == std::string::npos) return;
+    const size_t colon = line.find(':', at);
+    if (colon == std::string::npos) return;
+    std::istringstream number(line.substr(colon + 1));
+    size_t count = 0;
+    if (number >> count) declared_count_ = count;
+  }
+
   fs::path path_;
   std::istringstream in_;
   size_t line_number_ = 0;
+  std::optional<size_t> declared_count_;
 };
 
 bool HasMoreTokens(std::istringstream& tokens) {
@@ -77,8 +107,9 @@ void ReadCameras(const fs::path& path, Model* model) {
                         std::to_string(ColmapCameraNumParams(camera.model_id)) + " parameters, got " +
                         std::to_string(camera.params.size()));
     }
-    model->cameras[id] = camera;
+    reader.RequireNew(model->cameras.emplace(id, camera).second, "CAMERA_ID", id);
   }
+  reader.CheckDeclaredCount(model->cameras.size(), "cameras");
 }
 
 void ReadImages(const fs::path& path, Model* model) {
@@ -106,8 +137,9 @@ void ReadImages(const fs::path& path, Model* model) {
       point.point3d_id = reader.Parse<int64_t>(points, "POINT3D_ID");
       image.points2d.push_back(point);
     }
-    model->images[id] = std::move(image);
+    reader.RequireNew(model->images.emplace(id, std::move(image)).second, "IMAGE_ID", id);
   }
+  reader.CheckDeclaredCount(model->images.size(), "images");
 }
 
 void ReadPoints3D(const fs::path& path, Model* model) {
@@ -129,8 +161,9 @@ void ReadPoints3D(const fs::path& path, Model* model) {
       const auto point2d_idx = reader.Parse<uint32_t>(tokens, "TRACK POINT2D_IDX");
       point.track.emplace_back(image_id, point2d_idx);
     }
-    model->points3d[id] = std::move(point);
+    reader.RequireNew(model->points3d.emplace(id, std::move(point)).second, "POINT3D_ID", id);
   }
+  reader.CheckDeclaredCount(model->points3d.size(), "points");
 }
 
 // rigs.txt: RIG_ID NUM_SENSORS REF_SENSOR_TYPE REF_SENSOR_ID [further sensors].

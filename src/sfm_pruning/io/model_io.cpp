@@ -55,7 +55,9 @@ ModelFormat OutputModelFormat(const fs::path& path) {
   return ModelFormat::kColmapModel;
 }
 
-SfmData ReadModel(const fs::path& path) {
+namespace {
+
+SfmData ReadModelOfFormat(const fs::path& path) {
   switch (DetectModelFormat(path)) {
     case ModelFormat::kColmapModel:
       return ReadColmapModel(path);
@@ -72,6 +74,14 @@ SfmData ReadModel(const fs::path& path) {
     }
   }
   throw FileError(path.string(), "unknown model format");
+}
+
+}  // namespace
+
+SfmData ReadModel(const fs::path& path) {
+  SfmData data = ReadModelOfFormat(path);
+  ValidateSfmDataValues(data, path.string());  // every format: no NaN or absurd camera goes on
+  return data;
 }
 
 void WriteModel(const SfmData& data, const fs::path& path, const ModelWriteOptions& options) {

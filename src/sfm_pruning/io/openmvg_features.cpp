@@ -1,5 +1,6 @@
 #include "sfm_pruning/io/openmvg_features.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <map>
 #include <nlohmann/json.hpp>
@@ -38,6 +39,19 @@ Keypoint KeypointFromColumns(const std::vector<float>& v) {
 
 }  // namespace
 
+namespace {
+
+// A token as an error line can show it: quoted when it is short printable text, else described
+// (a binary file's bytes would garble the terminal).
+std::string QuotedToken(std::string_view token) {
+  constexpr size_t kMaxShown = 32;
+  const bool printable = std::all_of(token.begin(), token.end(), [](char c) { return c >= 0x20 && c < 0x7f; });
+  if (printable && token.size() <= kMaxShown) return "'" + std::string(token) + "'";
+  return printable ? "a " + std::to_string(token.size()) + "-character token" : "binary data";
+}
+
+}  // namespace
+
 std::vector<Keypoint> ReadFeatFile(const fs::path& path) {
   const std::string text = ReadFileToString(path, false);
   const std::string source = path.string();
@@ -61,7 +75,7 @@ std::vector<Keypoint> ReadFeatFile(const fs::path& path) {
     values.resize(columns);
     for (size_t c = 0; c < columns; ++c) {
       if (!openmvg_text::ParseFloat(tokens[c], &values[c]) || !std::isfinite(values[c])) {
-        throw FileError(source, where + "'" + std::string(tokens[c]) + "' is not a finite number");
+        throw FileError(source, where + QuotedToken(tokens[c]) + " is not a finite number");
       }
     }
     keypoints.push_back(KeypointFromColumns(values));

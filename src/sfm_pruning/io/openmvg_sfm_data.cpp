@@ -34,7 +34,11 @@ SfmData ReadSfmData(const std::filesystem::path& path, SfmDataParts parts) {
                      ? openmvg_format::ParseSfmDataJson(bytes, path.string(), parts)
                      : openmvg_format::ParseSfmDataBinary(bytes, path.string(), parts);
   // OpenMVG checks references only when the views are there to be referenced.
-  if (HasParts(parts, SfmDataParts::kViews)) ValidateSfmData(data, path.string());
+  if (HasParts(parts, SfmDataParts::kViews)) {
+    ValidateSfmData(data, path.string(), HasParts(parts, SfmDataParts::kIntrinsics));
+  } else {
+    ValidateSfmDataValues(data, path.string());
+  }
   return data;
 }
 

@@ -1,7 +1,12 @@
 #include "sfm_pruning/sfm/sfm_data.hpp"
 
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
 #include <set>
 #include <string>
+
+#include <Eigen/Dense>
 
 #include "sfm_pruning/util/error.hpp"
 
@@ -42,12 +47,16 @@ bool SfmData::PosesEqual(const SfmData& o) const {
   return true;
 }
 
-void ValidateSfmData(const SfmData& data, const std::string& source) {
+void ValidateSfmData(const SfmData& data, const std::string& source, bool intrinsics_loaded) {
   std::set<IndexT> used_intrinsics, used_poses;
   for (const auto& [key, view] : data.views) {
     if (view.id_view != key) {
       throw FileError(source, "view key " + std::to_string(key) + " holds id_view " +
                                   std::to_string(view.id_view));
+    }
+    if (intrinsics_loaded && view.id_intrinsic != kUndefinedIndex && !data.intrinsics.count(view.id_intrinsic)) {
+      throw FileError(source, "view " + std::to_string(key) + " names intrinsic " +
+                                  std::to_string(view.id_intrinsic) + ", which does not exist");
     }
     used_intrinsics.insert(view.id_intrinsic);
     used_poses.insert(view.id_pose);
@@ -73,6 +82,76 @@ void ValidateSfmData(const SfmData& data, const std::string& source) {
   };
   check_observations(data.structure, "landmark");
   check_observations(data.control_points, "control point");
+  ValidateSfmDataValues(data, source);
+}
+
+namespace {
+
+constexpr double kMaxImageSidePx = 1e6;
+constexpr double kMaxFocalPerImageSide = 1000.0;
+// Rotations read from text files carry rounding: |RᵀR − I| and |det R − 1| within this are proper.
+constexpr double kRotationTolerance = 1e-3;
+
+std::string Number(double value) {
+  char text[32];
+  std::snprintf(text, sizeof(text), "%g", value);
+  return text;
+}
+
+bool AllFinite(const Eigen::Ref<const Eigen::MatrixXd>& values) { return values.allFinite(); }
+
+}  // namespace
+
+std::string IntrinsicsProblem(const CameraIntrinsics& intrinsics) {
+  const double width = intrinsics.width(), height = intrinsics.height();
+  if (width <= 0 || height <= 0 || width > kMaxImageSidePx || height > kMaxImageSidePx) {
+    return "image size " + Number(width) + "x" + Number(height) + " is not a real image's";
+  }
+  for (const double value : intrinsics.params()) {
+    if (!std::isfinite(value)) return "a parameter is not a finite number (" + Number(value) + ")";
+  }
+  const double focal_x = intrinsics.FocalX(), focal_y = intrinsics.FocalY();
+  if (!(focal_x > 0.0) || !(focal_y > 0.0)) {
+    return "focal length must be positive, got " + Number(std::min(focal_x, focal_y));
+  }
+  const double limit = kMaxFocalPerImageSide * std::max(width, height);
+  if (std::max(focal_x, focal_y) > limit) {
+    return "focal length " + Number(std::max(focal_x, focal_y)) + " px is over " + Number(kMaxFocalPerImageSide) +
+           " image sides";
+  }
+  return {};
+}
+
+void ValidateSfmDataValues(const SfmData& data, const std::string& source) {
+  for (const auto& [id, intrinsics] : data.intrinsics) {
+    const std::string problem = IntrinsicsProblem(intrinsics);
+    if (!problem.empty()) throw FileError(source, "intrinsic " + std::to_string(id) + ": " + problem);
+  }
+  for (const auto& [id, pose] : data.poses) {
+    const std::string name = "pose " + std::to_string(id);
+    if (!AllFinite(pose.center)) throw FileError(source, name + ": the centre is not finite");
+    if (!AllFinite(pose.rotation)) throw FileError(source, name + ": the rotation is not finite");
+    const double orthogonality =
+        (pose.rotation.transpose() * pose.rotation - Eigen::Matrix3d::Identity()).cwiseAbs().maxCoeff();
+    if (orthogonality > kRotationTolerance || std::abs(pose.rotation.determinant() - 1.0) > kRotationTolerance) {
+      throw FileError(source, name + ": the rotation is not a rotation matrix (orthonormal, determinant 1)");
+    }
+  }
+  const auto check_landmarks = [&](const std::map<IndexT, Landmark>& landmarks, const char* what) {
+    for (const auto& [id, landmark] : landmarks) {
+      if (!AllFinite(landmark.X)) {
+        throw FileError(source, std::string(what) + " " + std::to_string(id) + ": the position is not finite");
+      }
+      for (const auto& [view_id, observation] : landmark.observations) {
+        if (!AllFinite(observation.x)) {
+          throw FileError(source, std::string(what) + " " + std::to_string(id) + ": its observation in view " +
+                                      std::to_string(view_id) + " is not a finite pixel");
+        }
+      }
+    }
+  };
+  check_landmarks(data.structure, "landmark");
+  check_landmarks(data.control_points, "control point");
 }
 
 }  // namespace sfm_pruning

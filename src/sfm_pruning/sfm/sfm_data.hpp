@@ -40,9 +40,21 @@ struct SfmData {
   bool PosesEqual(const SfmData& o) const;
 };
 
-// Checks that every reference resolves: view ids match their keys, observations name existing
-// views, no intrinsic or pose is orphaned (OpenMVG refuses to load such files). Throws Error
-// whose message starts with `source` (usually the file the data came from).
-void ValidateSfmData(const SfmData& data, const std::string& source);
+// Checks that every reference resolves: view ids match their keys, a view's intrinsic (unless
+// undefined) exists, observations name existing views, no intrinsic or pose is orphaned (OpenMVG
+// refuses to load such files); then the values (ValidateSfmDataValues). Throws Error whose
+// message starts with `source` (usually the file the data came from). `intrinsics_loaded` false:
+// only the views of a file were read, so their intrinsic ids are not looked up.
+void ValidateSfmData(const SfmData& data, const std::string& source, bool intrinsics_loaded = true);
+
+// Checks the numbers: every intrinsic passes IntrinsicsProblem, every pose has a finite centre
+// and a proper rotation, every landmark and observation is finite. A NaN focal or a rotation of
+// NaNs would otherwise run the solvers for minutes and end in a NaN model.
+void ValidateSfmDataValues(const SfmData& data, const std::string& source);
+
+// Why `intrinsics` cannot describe a real camera (empty when it can): an empty or absurd image
+// size, a parameter that is not finite, a focal length that is not positive or is more than a
+// thousand image sides (a field of view under 0.06 degrees: a unit mistake, not a lens).
+std::string IntrinsicsProblem(const CameraIntrinsics& intrinsics);
 
 }  // namespace sfm_pruning

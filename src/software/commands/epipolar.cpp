@@ -8,6 +8,7 @@
 #include "sfm_pruning/report/epipolar_image.hpp"
 #include "sfm_pruning/util/atomic_file.hpp"
 #include "sfm_pruning/util/error.hpp"
+#include "software/cli_checks.hpp"
 #include "software/cli_support.hpp"
 #include "software/commands.hpp"
 #include "software/commands/report_arguments.hpp"
@@ -83,7 +84,7 @@ void AddEpipolarCommand(CLI::App& app) {
   cmd->add_option("--max_others", args->max_others, "How many other images to choose")->capture_default_str();
   cmd->add_option("--ground_truth", args->ground_truth, "gt_cameras.txt (or any model) for the true lines");
   cmd->add_option("--height", args->height, "Height of each panel in pixels")
-      ->check(CLI::Range(64, 4096))
+      ->check(RangeValue(64, 4096))
       ->capture_default_str();
   cmd->add_option("--output", args->output, "Output picture (.png or .jpg)")->required();
   cmd->callback([args]() { RunEpipolar(*args); });

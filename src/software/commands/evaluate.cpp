@@ -9,6 +9,7 @@
 #include "sfm_pruning/io/model_io.hpp"
 #include "sfm_pruning/util/atomic_file.hpp"
 #include "sfm_pruning/util/error.hpp"
+#include "software/cli_checks.hpp"
 #include "software/cli_support.hpp"
 #include "software/commands.hpp"
 
@@ -122,9 +123,10 @@ void AddEvaluateCommand(CLI::App& app) {
       ->delimiter(',')
       ->capture_default_str();
   cmd->add_option("--json", args->json, "Also write the report as JSON to this file");
-  cmd->add_option("--seed", args->seed, "Seed of the alignment's RANSAC")->capture_default_str();
+  cmd->add_option("--seed", args->seed, "Seed of the alignment's RANSAC")->check(SeedValue())->capture_default_str();
   cmd->add_option("--inlier_threshold_scene_fraction", args->inlier_threshold_scene_fraction,
                   "Alignment inlier distance as a fraction of the ground-truth scene radius")
+      ->check(PositiveValue())
       ->capture_default_str();
   cmd->callback([args]() { RunEvaluate(*args); });
 }

@@ -123,7 +123,7 @@ void AddExportCommand(CLI::App& app) {
                 "Undistorted images keep every source pixel (black borders) instead of the default crop with "
                 "no black borders");
   cmd->add_option("--jpeg_quality", args->jpeg_quality, "Quality of undistorted JPEG images")
-      ->check(CLI::Range(1, 100))
+      ->check(RangeValue(1, 100))
       ->capture_default_str();
   cmd->add_option("--output_type", args->output_type, "--format colmap: BIN or TXT")
       ->check(CLI::IsMember({"BIN", "TXT"}))

@@ -99,7 +99,7 @@ void AddVerificationOptions(CLI::App* cmd, double* max_epipolar_error_deg, doubl
                   "not on their epipolar line, such as those between copies of a texture repeated along the "
                   "baseline (docs/global.md)")
       ->check(PositiveValue())
-      ->check(CLI::Range(0.0, 90.0))
+      ->check(RangeValue(0.0, 90.0))
       ->capture_default_str();
   cmd->add_option("--verification_precision_ratio", *precision_ratio,
                   "0 = off. With r in (0, 1), each pair's pose is also estimated at r times the threshold, and the "
@@ -107,7 +107,7 @@ void AddVerificationOptions(CLI::App* cmd, double* max_epipolar_error_deg, doubl
                   "threshold): on a plane whose texture repeats along the baseline, the loose threshold can "
                   "prefer a wrong pose that fits the true matches and the repeats together. Doubles the "
                   "verification's RANSAC (docs/global.md)")
-      ->check(CLI::Range(0.0, 0.99))
+      ->check(RangeValue(0.0, 0.99))
       ->capture_default_str();
 }
 
@@ -127,7 +127,7 @@ void AddMatchOptions(CLI::App* cmd, MatchSettings* settings, bool standalone) {
       ->check(CLI::IsMember({"AUTO", "FLANN", "BRUTE_FORCE"}))
       ->capture_default_str();
   cmd->add_option("--ratio", settings->ratio, "Lowe's ratio test on descriptor distances")
-      ->check(CLI::Range(0.1, 1.0))
+      ->check(RangeValue(0.1, 1.0))
       ->capture_default_str();
   cmd->add_flag("--no_mutual", settings->no_mutual, "Keep one-directional matches (no mutual check)");
   cmd->add_option("--flann_checks", settings->flann_checks, "FLANN: leaves visited per query")
@@ -135,6 +135,7 @@ void AddMatchOptions(CLI::App* cmd, MatchSettings* settings, bool standalone) {
       ->capture_default_str();
   if (standalone) {
     cmd->add_option("--seed", settings->seed, "Seed of the kd-trees and of the verification's RANSAC")
+        ->check(SeedValue())
         ->capture_default_str();
     AddVerificationOptions(cmd, &settings->max_epipolar_error_deg, &settings->verification_precision_ratio);
   }

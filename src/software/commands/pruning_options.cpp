@@ -81,7 +81,7 @@ void AddPruningOptions(CLI::App* cmd, sfm_pruning::ViewGraphPruningOptions* opti
       ->capture_default_str();
   group->add_option("--prune_max_loop_length", consistency.cycles.max_cycle_length,
                     "Longest loop tested, in cameras (paper: fewer than 8)")
-      ->check(CLI::Range(3, 64))
+      ->check(RangeValue(3, 64))
       ->capture_default_str();
   group->add_option("--prune_max_relative_rotation_error_deg", consistency.max_relative_rotation_error_deg,
                     "e_r threshold")
@@ -103,7 +103,7 @@ void AddPruningOptions(CLI::App* cmd, sfm_pruning::ViewGraphPruningOptions* opti
       ->capture_default_str();
   group->add_option("--prune_sample_fraction", alignment.sample_fraction,
                     "Fraction of the connecting edges drawn per RANSAC round")
-      ->check(CLI::Range(0.0, 1.0))
+      ->check(RangeValue(0.0, 1.0))
       ->capture_default_str();
   group->add_option("--prune_max_sample_size", options->max_sample_size,
                     "Cap on the RANSAC sample of a pair (0: no cap, the plain fraction)")
@@ -120,12 +120,12 @@ void AddPruningOptions(CLI::App* cmd, sfm_pruning::ViewGraphPruningOptions* opti
   group->add_option("--prune_coverage_break_even", alignment.coverage_break_even,
                     "match_coverage: a candidate whose edges match fewer than this fraction of the landmarks "
                     "they should see is ruled out")
-      ->check(CLI::Range(0.0, 1.0))
+      ->check(RangeValue(0.0, 1.0))
       ->capture_default_str();
   group->add_option("--prune_relative_coverage_break_even", alignment.relative_coverage_break_even,
                     "match_coverage, when every candidate is below the break-even: rule out those whose "
                     "coverage is below this fraction of the pair's best (0: the largest wins)")
-      ->check(CLI::Range(0.0, 1.0))
+      ->check(RangeValue(0.0, 1.0))
       ->capture_default_str();
   group->add_option("--prune_max_rotation_deviation_deg", alignment.max_rotation_deviation_deg,
                     "E_r: rotation deviation of an edge from the RANSAC hypothesis")
@@ -138,7 +138,7 @@ void AddPruningOptions(CLI::App* cmd, sfm_pruning::ViewGraphPruningOptions* opti
   group->add_option("--prune_min_edges_for_ransac", alignment.min_edges_for_ransac,
                     "Subgraph pairs with fewer voting edges keep or lose them all (few-edges policy) instead of "
                     "being aligned")
-      ->check(CLI::Range(2, 1000000))
+      ->check(RangeValue(2, 1000000))
       ->capture_default_str();
   group->add_option("--prune_rotation_only_fallback", alignment.rotation_only_fallback,
                     "A pair without a supported hypothesis keeps only the largest set of edges that agree on "
@@ -176,12 +176,12 @@ AuditModelNames(), CLI::ignore_case))
     group->add_option("--prune_audit_readmit_agreement", audit.readmit_agreement,
                       "Model audit: a removed edge is re-admitted when at least this share of its transferred "
                       "matches agree")
-        ->check(CLI::Range(0.0, 1.0))
+        ->check(RangeValue(0.0, 1.0))
         ->capture_default_str();
     group->add_option("--prune_audit_keep_agreement", audit.keep_agreement,
                       "Model audit: a kept edge is removed when less than this share of its transferred matches "
                       "agree")
-        ->check(CLI::Range(0.0, 1.0))
+        ->check(RangeValue(0.0, 1.0))
         ->capture_default_str();
   }
 
@@ -200,7 +200,7 @@ AuditModelNames(), CLI::ignore_case))
       ->capture_default_str();
   group->add_option("--prune_loop_max_scale_ratio", loops.max_scale_ratio,
                     "Subgraph triangle: largest scale change of the composed frame transforms")
-      ->check(CLI::Range(1.0, 1e9))
+      ->check(RangeValue(1.0, 1e9))
       ->capture_default_str();
   using LoopMethod = sfm_pruning::SubgraphLoopOptions::Method;
   group->add_option("--prune_loop_method", loops.method,
@@ -231,7 +231,7 @@ AuditModelNames(), CLI::ignore_case))
                     "Each kept edge between two aligned subgraphs drops the matches whose landmark, carried into "
                     "the other subgraph by the pair's transform, misses the other feature's ray by more than this "
                     "(degrees; 0: off, the paper). Removes repeated-texture matches inside true pairs")
-      ->check(CLI::Range(0.0, 90.0))
+      ->check(RangeValue(0.0, 90.0))
       ->capture_default_str();
   group->add_option("--prune_min_edges_for_trust", loops.min_edges_for_trust,
                     "trusted_forest: subgraph pairs of fewer connecting edges are ranked after all the others")
@@ -240,7 +240,7 @@ AuditModelNames(), CLI::ignore_case))
                     "trusted_forest: a pair whose RANSAC found a rival candidate of at least this share of the "
                     "selected consensus, which the coverage does not tell apart, is ranked after the decisive "
                     "pairs (0: off; docs/pruning.md)")
-      ->check(CLI::Range(0.0, 1.0))
+      ->check(RangeValue(0.0, 1.0))
       ->capture_default_str();
   using LinkTrust = sfm_pruning::PairTrustMeasure;
   group->add_option("--prune_link_trust", options->link_trust,

@@ -46,7 +46,7 @@ sfm_pruning::ViewGraph BuildVerifiedViewGraph(const EngineSettings& settings, co
                                               const sfm_pruning::SfmData* scene) {
   const sfm_pruning::SfmData& views_and_intrinsics = scene != nullptr ? *scene : input.scene;
   if (input.verified.empty() && input.putative.empty()) {
-    throw Error(input.source + ": no edges: no two-view geometries and no matches");
+    throw Error(input.source + ": no two images match (no two-view geometries and no matches): nothing to reconstruct");
   }
   sfm_pruning::ViewGraphBuildOptions options;
   options.seed = settings.seed;
@@ -64,8 +64,8 @@ sfm_pruning::ViewGraph BuildVerifiedViewGraph(const EngineSettings& settings, co
     throw Error(input.source + ": " + e.what());
   }
   if (graph.NumValidEdges() == 0) {
-    std::string message = input.source + ": no edges: all " + std::to_string(report->num_pairs) +
-                          " pairs were rejected by the verification";
+    std::string message = input.source + ": no two images match: the verification rejected all " +
+                          std::to_string(report->num_pairs) + " matched pairs";
     if (!report->rejected_pairs.empty()) {
       message += " (pair " + PairName(report->rejected_pairs.front().pair) + ": " +
                  report->rejected_pairs.front().reason + ")";
@@ -270,6 +270,7 @@ sfm_pruning::PrunedGlobalEngineOptions PrunedEngineOptions(const EngineSettings&
 
 void AddSolverOptions(CLI::App* cmd, EngineSettings* settings) {
   cmd->add_option("--seed", settings->seed, "Seed of every random choice (RANSAC, positioning start)")
+      ->check(SeedValue())
       ->capture_default_str();
   cmd->add_option("--num_threads", settings->num_threads,
                   "Worker threads (1 gives bitwise reproducible results)")
@@ -289,7 +290,7 @@ void AddSolverOptions(CLI::App* cmd, EngineSettings* settings) {
   cmd->add_option("--positioning_random_starts", settings->positioning_random_starts,
                   "Random starts of the positioning solve (GLOBAL_PRUNED: of its solve of the pruned graph); the "
                   "solution that agrees with the most observation rays is kept (1: a single start, as GLOMAP)")
-      ->check(CLI::Range(1, 1000))
+      ->check(RangeValue(1, 1000))
       ->capture_default_str();
   cmd->add_option("--positioning_start_screening", settings->positioning_start_screening,
                   "With several random starts: solve each for this many iterations only, keep the one that "

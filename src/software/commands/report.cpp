@@ -9,6 +9,7 @@
 #include "sfm_pruning/report/html_report.hpp"
 #include "sfm_pruning/util/atomic_file.hpp"
 #include "sfm_pruning/util/error.hpp"
+#include "software/cli_checks.hpp"
 #include "software/cli_support.hpp"
 #include "software/commands.hpp"
 #include "software/commands/report_arguments.hpp"
@@ -79,7 +80,9 @@ void AddReportCommand(CLI::App& app) {
   cmd->add_option("--other_views", args->other_views, "Images each epipolar check draws lines in")
       ->capture_default_str();
   cmd->add_option("--title", args->title, "Page title (default: the run folder's name)");
-  cmd->add_option("--seed", args->seed, "Seed of the graph layout and the ground-truth alignment")->capture_default_str();
+  cmd->add_option("--seed", args->seed, "Seed of the graph layout and the ground-truth alignment")
+      ->check(SeedValue())
+      ->capture_default_str();
   cmd->add_option("--output", args->output, "Output HTML file")->required();
   cmd->callback([args]() { RunReport(*args); });
 }

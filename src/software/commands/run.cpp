@@ -83,6 +83,11 @@ void RunFromImages(const RunArguments& args, const fs::path& images, const fs::p
       HashKey(FolderFingerprint(images) + SettingsKey(args.init) + FileFingerprint(args.init.k_file));
   timings.push_back(RunOrReuse(&manifest, "init", init_key, {sfm_path}, args.force,
                                [&]() { RunInitStage(args.init, images, sfm_path, threads); }));
+  const size_t num_images = read_scene().views.size();
+  if (num_images < 2) {
+    throw sfm_pruning::FileError(images.string(), "only " + std::to_string(num_images) +
+                                                      " image decodes; a reconstruction needs at least two");
+  }
 
   const std::string features_key = HashKey(init_key + SettingsKey(args.features));
   std::optional<sfm_pruning::FeaturesPerView> features;
@@ -103,8 +108,10 @@ void RunFromImages(const RunArguments& args, const fs::path& images, const fs::p
   features.reset();  // descriptors are not needed any more
 
   const auto start = std::chrono::steady_clock::now();
-  const ReconstructionInput input =
+  ReconstructionInput input =
       ReadOpenMvgInput(sfm_path, matches_dir, matches_dir / "matches.e.bin", TerminalProgressBar());
+  // Problems of the matches are the images' (the run wrote the match file itself).
+  input.source = images.string();
   RunReconstruction(args.engine, input, out, SecondsSince(start), timings);
 }
 

@@ -26,6 +26,7 @@
 #include "sfm_pruning/util/atomic_file.hpp"
 #include "sfm_pruning/util/error.hpp"
 #include "sfm_pruning/util/output_folder.hpp"
+#include "software/cli_checks.hpp"
 #include "software/cli_support.hpp"
 #include "software/commands.hpp"
 
@@ -150,7 +151,7 @@ void AddSynthCommand(CLI::App& app) {
   cmd->add_option("--scene", o.scene, "Scene: a fixed one, or a family_* whose seed draws the whole scene")->required()->check(CLI::IsMember(sfm_pruning::SyntheticSceneNames()));
   cmd->add_option("--output,-o", *output, "Output directory (replaced atomically)")->required();
   AddOverwriteFlag(cmd, overwrite.get());
-  cmd->add_option("--seed", o.seed, "Random seed: same options and seed give identical files");
+  cmd->add_option("--seed", o.seed, "Random seed: same options and seed give identical files")->check(SeedValue());
   cmd->add_option("--num_views", o.num_views, "Number of views (0: scene default)");
   cmd->add_option("--image_width", o.image_width, "Image width in pixels (0: scene default)");
   cmd->add_option("--image_height", o.image_height, "Image height in pixels (0: scene default)");
