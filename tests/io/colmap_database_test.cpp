@@ -199,6 +199,18 @@ View MakeView(IndexT id, IndexT intrinsic, const std::string& name) {
   return view;
 }
 
+// Two images of one camera, three keypoints, one putative match.
+ColmapDatabase SmallDatabase() {
+  ColmapDatabase small;
+  small.sfm_data.intrinsics[1] = CameraIntrinsics::Pinhole(100, 80, 90, 49.5, 39.5);
+  small.sfm_data.views[1] = MakeView(1, 1, "a.png");
+  small.sfm_data.views[2] = MakeView(2, 1, "b.png");
+  small.features[1].keypoints = {{1.f, 2.f, 3.f, 0.5f}, {4.f, 5.f, 1.f, 0.f}};
+  small.features[2].keypoints = {{6.f, 7.f, 2.f, 0.25f}};
+  small.putative[{1, 2}] = {{1, 0}};
+  return small;
+}
+
 void ExecuteSql(const fs::path& path, const std::string& sql) {
   sqlite3* db = nullptr;
   ASSERT_EQ(sqlite3_open(path.c_str(), &db), SQLITE_OK);
@@ -215,13 +227,7 @@ TEST(ColmapDatabase, RejectsBadFiles) {
              "CREATE TABLE cameras (camera_id INTEGER); CREATE TABLE images (image_id INTEGER);");
   ExpectReadError(dir / "other.db", "not a COLMAP database: table 'keypoints' is missing");
 
-  ColmapDatabase small;
-  small.sfm_data.intrinsics[1] = CameraIntrinsics::Pinhole(100, 80, 90, 49.5, 39.5);
-  small.sfm_data.views[1] = MakeView(1, 1, "a.png");
-  small.sfm_data.views[2] = MakeView(2, 1, "b.png");
-  small.features[1].keypoints = {{1.f, 2.f, 3.f, 0.5f}, {4.f, 5.f, 1.f, 0.f}};
-  small.features[2].keypoints = {{6.f, 7.f, 2.f, 0.25f}};
-  small.putative[{1, 2}] = {{1, 0}};
+  ColmapDatabase small = SmallDatabase();
   const fs::path path = dir / "small.db";
   WriteColmapDatabase(small, path);
   const ColmapDatabase back = ReadColmapDatabase(path);
@@ -248,13 +254,7 @@ TEST(ColmapDatabase, RejectsBadFiles) {
 // they are in: a NaN focal would otherwise keep the verification busy for minutes.
 TEST(ColmapDatabase, RejectsImpossibleNumbers) {
   const fs::path dir = testing::ScratchDir("colmap_database_numbers");
-  ColmapDatabase small;
-  small.sfm_data.intrinsics[1] = CameraIntrinsics::Pinhole(100, 80, 90, 49.5, 39.5);
-  small.sfm_data.views[1] = MakeView(1, 1, "a.png");
-  small.sfm_data.views[2] = MakeView(2, 1, "b.png");
-  small.features[1].keypoints = {{1.f, 2.f, 3.f, 0.5f}, {4.f, 5.f, 1.f, 0.f}};
-  small.features[2].keypoints = {{6.f, 7.f, 2.f, 0.25f}};
-  small.putative[{1, 2}] = {{1, 0}};
+  ColmapDatabase small = SmallDatabase();
   ColmapTwoViewGeometry geometry;
   geometry.inliers = {{1, 0}};
   geometry.config = 2;
