@@ -24,3 +24,17 @@ if(PRUNESFM_SANITIZE)
   # _State) in code that the uninstrumented Release build compiles without a warning.
   list(APPEND PRUNESFM_WARNING_FLAGS -Wno-maybe-uninitialized)
 endif()
+
+if(PRUNESFM_FUZZ)
+  # libFuzzer ships with clang (Debian: clang, libclang-rt-14-dev). Every library the fuzz targets
+  # link is instrumented for coverage (fuzzer-no-link) and checked by ASan+UBSan, so a parser bug
+  # deep in a reader is found and reported like one in the target itself.
+  if(NOT CMAKE_CXX_COMPILER_ID STREQUAL "Clang")
+    message(FATAL_ERROR "PRUNESFM_FUZZ needs clang: -DCMAKE_C_COMPILER=clang -DCMAKE_CXX_COMPILER=clang++")
+  endif()
+  set(PRUNESFM_FUZZ_SANITIZERS -fsanitize=address,undefined -fno-sanitize=null,object-size,alignment,vptr)
+  add_compile_options(-fsanitize=fuzzer-no-link ${PRUNESFM_FUZZ_SANITIZERS} -fno-omit-frame-pointer
+                      -fno-sanitize-recover=undefined
+                      -fsanitize-ignorelist=${PROJECT_SOURCE_DIR}/tests/fuzz/sanitizer_ignorelist.txt)
+  add_link_options(${PRUNESFM_FUZZ_SANITIZERS})
+endif()

@@ -12,6 +12,7 @@ packages=(
   sqlite3 python3
   libblas-dev libopenblas0-serial  # the BLAS behind libblas.so.3 (alternatives): brute-force matching and CHOLMOD, docs/dependencies.md
   chromium  # headless browser of the report's page test (tests/report/browser_test.cpp)
+  clang libclang-rt-14-dev  # libFuzzer for the parsers' fuzz targets (scripts/fuzz.sh)
 )
 # Interop peers: the real COLMAP 3.8, used by tests/interop and bench/.
 if [[ "${PRUNESFM_SKIP_COLMAP:-0}" != 1 ]]; then

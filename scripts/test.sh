@@ -1,6 +1,7 @@
 #!/usr/bin/env bash
 # The test command: installs the dependencies (Debian packages, by name), builds PruneSfM from
-# scratch with warnings as errors and ASan+UBSan, and runs every test in that build.
+# scratch with warnings as errors and ASan+UBSan, runs every test in that build, then passes every
+# seed of the parsers' fuzz targets once (scripts/fuzz.sh, a clang build of the readers only).
 #
 # Why one build: on CI's 2 cores a from-scratch Release build takes about 15 minutes, so a Release
 # build plus a separate -O0 sanitizer build (whose end-to-end tests crawl) did not fit the
@@ -35,4 +36,6 @@ echo "== Tests ($build)"
 export ASAN_OPTIONS=alloc_dealloc_mismatch=0:detect_leaks=1
 export UBSAN_OPTIONS=print_stacktrace=1:halt_on_error=1
 (cd "$build" && ctest --output-on-failure -j "$jobs" --timeout 1200)
-echo "== All tests passed ($root, $build)"
+# Every parser's fuzz target over its seeds once (a real fuzzing run: scripts/fuzz.sh 600).
+bash scripts/fuzz.sh
+echo "== All tests passed ($root, $build and build/fuzz)"

@@ -49,6 +49,25 @@ TEST(Ply, RejectsNonPlyAndTruncatedFiles) {
   EXPECT_THROW(ReadPlyPoints(dir / "missing.ply"), Error);
 }
 
+// Found by fuzz_ply: an ASCII colour outside a byte's range was converted to uint8_t (undefined).
+TEST(Ply, RejectsColoursOutsideAByte) {
+  const auto dir = testing::ScratchDir("ply_colour");
+  for (const char* colour : {"12882 0 0", "0 -1 0", "0 0 255.5"}) {
+    SCOPED_TRACE(colour);
+    WriteFileAtomically(dir / "colour.ply", false, [&](std::ostream& out) {
+      out << "ply\nformat ascii 1.0\nelement vertex 1\nproperty double x\nproperty double y\nproperty double z\n"
+             "property uchar red\nproperty uchar green\nproperty uchar blue\nend_header\n1 2 3 "
+          << colour << "\n";
+    });
+    try {
+      ReadPlyPoints(dir / "colour.ply");
+      ADD_FAILURE() << "accepted";
+    } catch (const Error& e) {
+      EXPECT_NE(std::string(e.what()).find("vertex 0: colour value"), std::string::npos) << e.what();
+    }
+  }
+}
+
 TEST(AtomicFile, FailedWriteLeavesNoFileBehind) {
   const auto dir = testing::ScratchDir("atomic");
   const auto path = dir / "out.txt";

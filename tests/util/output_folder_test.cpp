@@ -49,6 +49,8 @@ TEST(OutputFolder, FilesAndEmptyPathsAreNeverOutputFolders) {
   EXPECT_THROW(CheckOutputFolder(scratch / "notes.txt", false), Error);
   EXPECT_THROW(CheckOutputFolder(scratch / "notes.txt", true), Error);
   EXPECT_THROW(CheckOutputFolder("", true), Error);
+  EXPECT_THROW(WriteFileAtomically("", false, [](std::ostream& out) { out << "x"; }), Error);
+  EXPECT_THROW(WriteDirectoryAtomically("", [](const fs::path&) {}), Error);
   EXPECT_THROW(WriteDirectoryAtomically(scratch / "notes.txt", [](const fs::path&) {}), Error);
   EXPECT_EQ(ReadText(scratch / "notes.txt"), "keep me");
 }

@@ -67,6 +67,16 @@ size_t PlyTypeSize(const std::string& type) {
   return 0;
 }
 
+// A colour channel of vertex `vertex`: 0-255 (a wider value, a float in 0-1 or a NaN would not
+// convert to a byte).
+uint8_t ColorChannel(double value, size_t vertex, const std::string& source) {
+  if (!(value >= 0.0 && value <= 255.0)) {
+    throw FileError(source, "vertex " + std::to_string(vertex) + ": colour value " + std::to_string(value) +
+                                " is outside 0-255");
+  }
+  return static_cast<uint8_t>(value);
+}
+
 double ReadBinaryScalar(const char* p, const std::string& type) {
   if (PlyTypeSize(type) == 8) {
     double v;
@@ -163,9 +173,9 @@ SfmData ReadPlyPoints(const std::filesystem::path& path) {
       Landmark landmark;
       for (int axis = 0; axis < 3; ++axis) landmark.X[axis] = ReadBinaryScalar(row + offsets[axis], properties[axis].first);
       if (red >= 0 && green >= 0 && blue >= 0) {
-        landmark.color = {static_cast<uint8_t>(ReadBinaryScalar(row + offsets[red], properties[red].first)),
-                          static_cast<uint8_t>(ReadBinaryScalar(row + offsets[green], properties[green].first)),
-                          static_cast<uint8_t>(ReadBinaryScalar(row + offsets[blue], properties[blue].first))};
+        landmark.color = {ColorChannel(ReadBinaryScalar(row + offsets[red], properties[red].first), v, source),
+                          ColorChannel(ReadBinaryScalar(row + offsets[green], properties[green].first), v, source),
+                          ColorChannel(ReadBinaryScalar(row + offsets[blue], properties[blue].first), v, source)};
       }
       data.structure[static_cast<IndexT>(v)] = landmark;
     }
@@ -179,8 +189,8 @@ SfmData ReadPlyPoints(const std::filesystem::path& path) {
       Landmark landmark;
       landmark.X = {values[0], values[1], values[2]};
       if (red >= 0 && green >= 0 && blue >= 0) {
-        landmark.color = {static_cast<uint8_t>(values[red]), static_cast<uint8_t>(values[green]),
-                          static_cast<uint8_t>(values[blue])};
+        landmark.color = {ColorChannel(values[red], v, source), ColorChannel(values[green], v, source),
+                          ColorChannel(values[blue], v, source)};
       }
       data.structure[static_cast<IndexT>(v)] = landmark;
     }

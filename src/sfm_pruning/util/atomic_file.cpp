@@ -75,6 +75,7 @@ void RemoveStaleTemporaries(const fs::path& path) {
 
 void WriteFileAtomically(const fs::path& path, bool binary,
                          const std::function<void(std::ostream&)>& write) {
+  if (path.empty()) throw Error("output file: the path is empty");
   EnsureParentExists(path);
   const fs::path tmp = TemporarySibling(path);
   try {
@@ -98,6 +99,7 @@ void WriteFileAtomically(const fs::path& path, bool binary,
 
 void WriteDirectoryAtomically(const fs::path& dir,
                               const std::function<void(const fs::path&)>& write) {
+  if (dir.empty()) throw Error("output folder: the path is empty");
   std::error_code ec;
   if (fs::exists(dir, ec) && !fs::is_directory(dir, ec)) {
     throw FileError(dir.string(), "exists and is not a folder; a file is not replaced by a folder");
