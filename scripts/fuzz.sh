@@ -20,9 +20,13 @@ build=build/fuzz
 shared=${PRUNESFM_SHARED_DIR:-../shared}/formats
 
 echo "== Fuzz targets (clang, libFuzzer, ASan+UBSan) in $build"
-cmake -S . -B "$build" -G Ninja -DCMAKE_BUILD_TYPE=RelWithDebInfo -DCMAKE_CXX_FLAGS_RELWITHDEBINFO="-O1 -g1" \
-  -DCMAKE_C_COMPILER=clang -DCMAKE_CXX_COMPILER=clang++ -DPRUNESFM_FUZZ=ON >/dev/null
-cmake --build "$build" -j "$(nproc)" --target prunesfm_fuzz_targets
+mkdir -p "$build"
+(  # one build at a time when several runs start together
+  flock 9
+  cmake -S . -B "$build" -G Ninja -DCMAKE_BUILD_TYPE=RelWithDebInfo -DCMAKE_CXX_FLAGS_RELWITHDEBINFO="-O1 -g1" \
+    -DCMAKE_C_COMPILER=clang -DCMAKE_CXX_COMPILER=clang++ -DPRUNESFM_FUZZ=ON >/dev/null
+  cmake --build "$build" -j "$(nproc)" --target prunesfm_fuzz_targets
+) 9>"$build/.build.lock"
 
 seeds=$build/seeds
 if [[ ${#only[@]} -gt 0 ]]; then
@@ -50,9 +54,10 @@ join_seed() {  # TARGET NAME FILE... : the files of one multi-file input, joined
     first=0
   done > "$seeds/$target/$name"
 }
+for file in tests/data/openmvg_json/*.json; do cp "$file" "$seeds/fuzz_sfm_data_json/"; done
 if [[ -d $shared ]]; then
   castle=$shared/openmvg/sceaux_castle/matches
-  copy_seed fuzz_sfm_data_json "$castle/sfm_data.json" tests/data/openmvg_json/*.json
+  copy_seed fuzz_sfm_data_json "$castle/sfm_data.json"
   copy_seed fuzz_image_describer "$castle/image_describer.json"
   copy_seed fuzz_pair_list "$castle/pairs.bin"
   copy_seed fuzz_openmvs_scene "$shared/openmvs/scene.mvs"

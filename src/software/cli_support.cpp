@@ -24,15 +24,21 @@ sfm_pruning::ProgressCallback TerminalProgressBar() {
   };
 }
 
-CLI::Option* AddOverwriteFlag(CLI::App* cmd, bool* overwrite) {
+CLI::Option* AddOverwriteFlag(CLI::App* cmd, bool* overwrite, OverwriteMeans means) {
   return cmd->add_flag("--overwrite", *overwrite,
-                       "Also write into an existing folder that is not empty and is not an earlier prunesfm output "
-                       "(files of the same names are replaced)");
+                       means == OverwriteMeans::kWriteInto
+                           ? "Also write into an existing folder that is not empty and not an earlier prunesfm run "
+                             "(files of the same names are replaced, the others stay)"
+                           : "Also replace an existing folder that is not empty and not an earlier output of this "
+                             "kind (everything in it is deleted)");
 }
 
-void PrepareOutputFolder(const std::filesystem::path& dir, bool overwrite) {
-  sfm_pruning::CheckOutputFolder(dir, overwrite);
-  sfm_pruning::ClaimOutputFolder(dir);
+void PrepareRunFolder(const std::filesystem::path& dir, bool overwrite) {
+  if (sfm_pruning::CheckOutputFolder(dir, sfm_pruning::OutputFolderKind::kRun, overwrite)) {
+    sfm_pruning::ClaimOutputFolder(dir, sfm_pruning::OutputFolderKind::kRun);
+  } else {
+    std::filesystem::create_directories(dir);
+  }
 }
 
 void Info(const std::string& message) { std::fprintf(stderr, "prunesfm: %s\n", message.c_str()); }

@@ -18,12 +18,19 @@ inline constexpr const char* kEngineNames[] = {"GLOBAL", "GLOBAL_PRUNED"};
 // and prints nothing otherwise (logs and CI stay clean).
 sfm_pruning::ProgressCallback TerminalProgressBar();
 
-// Adds `--overwrite`: write into a folder that is neither empty nor an earlier prunesfm output.
-CLI::Option* AddOverwriteFlag(CLI::App* cmd, bool* overwrite);
+// What `--overwrite` does to a folder that is neither empty nor an earlier output of the command.
+enum class OverwriteMeans {
+  kWriteInto,         // run, reconstruct: files of the same names are replaced, others stay
+  kReplaceTheFolder,  // synth, convert, export: the folder is replaced with everything in it
+};
 
-// Refuses `dir` as an output folder unless it is new, empty, an earlier output or `overwrite`
-// (util/output_folder.hpp), then creates and marks it. Call before any long work.
-void PrepareOutputFolder(const std::filesystem::path& dir, bool overwrite);
+// Adds `--overwrite` with the help that says which.
+CLI::Option* AddOverwriteFlag(CLI::App* cmd, bool* overwrite, OverwriteMeans means);
+
+// For run and reconstruct: refuses `dir` as a run folder unless it is new, empty, an earlier run
+// or `overwrite` (util/output_folder.hpp), then creates it and marks it when it is the project's
+// (a user's folder written into through `overwrite` stays unmarked). Call before any long work.
+void PrepareRunFolder(const std::filesystem::path& dir, bool overwrite);
 
 // Prints an informational line on stderr ("prunesfm: ...").
 void Info(const std::string& message);

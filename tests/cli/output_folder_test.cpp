@@ -6,6 +6,7 @@
 #include <filesystem>
 #include <fstream>
 #include <string>
+#include <vector>
 
 #include "run_prunesfm.hpp"
 #include "support/test_data.hpp"
@@ -48,12 +49,55 @@ TEST(CliOutputFolder, AFolderOfTheUsersIsNotReplaced) {
   }
 }
 
+// --overwrite replaces a folder written whole (its help says so) and writes into a run folder,
+// which stays unmarked: no command that replaces whole folders takes it for an output of its own.
 TEST(CliOutputFolder, OverwriteIsTheUsersExplicitYes) {
   const fs::path scratch = ScratchDir("cli_output_overwrite");
   std::ofstream(scratch / "notes.txt") << "x";
   const CommandResult result = Synth(scratch, {"--overwrite"});
   EXPECT_EQ(result.exit_code, 0) << result.err;
   EXPECT_TRUE(fs::exists(scratch / "sfm_data.json"));
+  EXPECT_FALSE(fs::exists(scratch / "notes.txt"));
+
+  const fs::path user = scratch / "user";
+  fs::create_directories(user);
+  std::ofstream(user / "notes.txt") << "x";
+  const auto reconstruct = [&](const std::vector<std::string>& extra) {
+    std::vector<std::string> args = {"reconstruct", "--engine", "GLOBAL", "--sfm_data",
+                                     (scratch / "sfm_data.json").string(), "--matches_dir",
+                                     (scratch / "matches").string(), "-o", user.string()};
+    args.insert(args.end(), extra.begin(), extra.end());
+    return RunPrunesfm(args);
+  };
+  EXPECT_EQ(reconstruct({}).exit_code, 1);
+  const CommandResult into = reconstruct({"--overwrite"});
+  EXPECT_EQ(into.exit_code, 0) << into.err;
+  EXPECT_EQ(ReadText(user / "notes.txt"), "x");
+  EXPECT_TRUE(fs::exists(user / "sfm_data.json"));
+  // It now holds a run, which a later run may write into again; a command that replaces whole
+  // folders still may not take it.
+  const CommandResult exported = RunPrunesfm({"export", "-i", (user / "sfm_data.json").string(), "--format",
+                                              "colmap", "-o", user.string()});
+  EXPECT_EQ(exported.exit_code, 1) << exported.err;
+  EXPECT_EQ(ReadText(user / "notes.txt"), "x");
+}
+
+TEST(CliOutputFolder, AnOutputOfAnotherKindIsNotReplaced) {
+  const fs::path scratch = ScratchDir("cli_output_kind");
+  ASSERT_EQ(Synth(scratch / "scene").exit_code, 0);
+  const CommandResult run = RunPrunesfm({"reconstruct", "--engine", "GLOBAL", "--sfm_data",
+                                         (scratch / "scene" / "sfm_data.json").string(), "--matches_dir",
+                                         (scratch / "scene" / "matches").string(), "-o", (scratch / "run").string()});
+  ASSERT_EQ(run.exit_code, 0) << run.err;
+  const CommandResult exported = RunPrunesfm({"export", "-i", (scratch / "run" / "sfm_data.json").string(), "--format",
+                                              "colmap", "-o", (scratch / "run").string()});
+  EXPECT_EQ(exported.exit_code, 1);
+  EXPECT_NE(exported.err.find("holds a prunesfm run, not a COLMAP model"), std::string::npos) << exported.err;
+  EXPECT_TRUE(fs::exists(scratch / "run" / "timings.json"));
+  const CommandResult into_scene = RunPrunesfm({"convert", "-i", (scratch / "run" / "sfm_data.json").string(), "-o",
+                                                (scratch / "scene").string()});
+  EXPECT_EQ(into_scene.exit_code, 1);
+  EXPECT_TRUE(fs::exists(scratch / "scene" / "database.db"));
 }
 
 TEST(CliOutputFolder, AFileIsNeverReplacedByAFolderAndAnEmptyPathIsRefused) {

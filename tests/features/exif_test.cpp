@@ -169,6 +169,12 @@ TEST(FocalPrior, SourcesInOrderOfPreference) {
   ExifMetadata only_mm;
   only_mm.focal_mm = 6.0;
   EXPECT_EQ(FocalFromExif(&only_mm, 640, 480, {}).source, FocalSource::kDefaultGuess);
+  // A tag that gives no real lens falls through to the next source instead of stopping the run.
+  ExifMetadata bogus;
+  bogus.focal_35mm = 65535.0;  // 65535 mm on 640 px: a 0.03 degree field of view
+  EXPECT_EQ(FocalFromExif(&bogus, 640, 480, {}).source, FocalSource::kDefaultGuess);
+  bogus.focal_35mm = 0.0;
+  EXPECT_EQ(FocalFromExif(&bogus, 640, 480, {}).source, FocalSource::kDefaultGuess);
 }
 
 TEST(FocalPrior, NamesRoundTrip) {

@@ -49,6 +49,15 @@ TEST(Ply, RejectsNonPlyAndTruncatedFiles) {
   EXPECT_THROW(ReadPlyPoints(dir / "missing.ply"), Error);
 }
 
+TEST(Ply, SixteenBitColoursAreScaledToBytes) {
+  const auto dir = testing::ScratchDir("ply_colour16");
+  WriteFileAtomically(dir / "colour16.ply", false, [&](std::ostream& out) {
+    out << "ply\nformat ascii 1.0\nelement vertex 1\nproperty float x\nproperty float y\nproperty float z\n"
+           "property ushort red\nproperty ushort green\nproperty ushort blue\nend_header\n1 2 3 65535 0 32896\n";
+  });
+  EXPECT_EQ(ReadPlyPoints(dir / "colour16.ply").structure.at(0).color, (std::array<uint8_t, 3>{255, 0, 128}));
+}
+
 // Found by fuzz_ply: an ASCII colour outside a byte's range was converted to uint8_t (undefined).
 TEST(Ply, RejectsColoursOutsideAByte) {
   const auto dir = testing::ScratchDir("ply_colour");

@@ -55,7 +55,7 @@ void WriteColmapUndistortedWorkspace(const SfmData& data, const fs::path& image_
                                      const fs::path& output_dir, const DenseWorkspaceOptions& options,
                                      const ProgressCallback& progress) {
   const UndistortedModel undistorted = UndistortModel(data, options.undistort);
-  WriteDirectoryAtomically(output_dir, [&](const fs::path& dir) {
+  WriteDirectoryAtomically(output_dir, OutputFolderKind::kColmapDenseWorkspace, [&](const fs::path& dir) {
     WriteUndistortedImages(data, undistorted, image_root, dir / "images", options.images, progress);
     WriteColmapModel(undistorted.data, dir / "sparse", ColmapModelFormat::kBinary);
     WriteStereoFolder(undistorted.data, dir / "stereo");
@@ -67,7 +67,7 @@ void WriteOpenMvsWorkspace(const SfmData& data, const fs::path& image_root, cons
                            const DenseWorkspaceOptions& options, const ProgressCallback& progress) {
   const UndistortedModel undistorted = UndistortModel(data, options.undistort);
   const OpenMvsScene scene = OpenMvsSceneFromSfmData(undistorted.data, "images", options.openmvs_version);
-  WriteDirectoryAtomically(output_dir, [&](const fs::path& dir) {
+  WriteDirectoryAtomically(output_dir, OutputFolderKind::kOpenMvsWorkspace, [&](const fs::path& dir) {
     WriteUndistortedImages(data, undistorted, image_root, dir / "images", options.images, progress);
     WriteOpenMvsScene(scene, dir / "scene.mvs");
   });

@@ -14,6 +14,9 @@ constexpr std::pair<FocalSource, const char*> kNames[] = {
     {FocalSource::kExifFocalPlane, "exif_focal_plane"},   {FocalSource::kDefaultGuess, "default_guess"},
 };
 
+// A focal of more than this many image sides is no lens (a field of view under 0.6 degrees).
+constexpr double kMaxExifFocalSides = 100.0;
+
 }  // namespace
 
 std::string FocalSourceName(FocalSource source) {
@@ -32,21 +35,27 @@ std::optional<FocalSource> FocalSourceFromName(const std::string& name) {
 
 FocalPrior FocalFromExif(const ExifMetadata* exif, uint32_t width, uint32_t height, const FocalPriorOptions& options) {
   const double max_side = std::max(width, height);
+  // A tag that gives no real lens (0, NaN, 65535 mm) falls through to the next source: the focal
+  // must be one that IntrinsicsProblem (sfm/sfm_data.hpp) accepts, else the whole run would stop.
+  const auto plausible = [&](double focal_px) { return focal_px > 0.0 && focal_px <= kMaxExifFocalSides * max_side; };
   if (exif != nullptr) {
     if (exif->focal_mm && options.sensor_width_mm > 0.0) {
-      return {*exif->focal_mm * max_side / options.sensor_width_mm, FocalSource::kExifSensorWidth};
+      const double focal = *exif->focal_mm * max_side / options.sensor_width_mm;
+      if (plausible(focal)) return {focal, FocalSource::kExifSensorWidth};
     }
     if (exif->focal_35mm) {
       // The 35 mm equivalent keeps the field of view along the diagonal.
       const double diagonal_px = std::hypot(static_cast<double>(width), static_cast<double>(height));
-      return {*exif->focal_35mm * diagonal_px / kFullFrameDiagonalMm, FocalSource::kExif35mm};
+      const double focal = *exif->focal_35mm * diagonal_px / kFullFrameDiagonalMm;
+      if (plausible(focal)) return {focal, FocalSource::kExif35mm};
     }
     if (exif->focal_mm && exif->focal_plane_x_res_mm) {
       // Pixels per mm along the sensor's long side at the recorded resolution (PixelXDimension
       // when given), scaled to this image: it may have been resized or rotated after capture.
       const double recorded_width = exif->pixel_x_dimension.value_or(max_side);
       const double px_per_mm = *exif->focal_plane_x_res_mm * max_side / recorded_width;
-      return {*exif->focal_mm * px_per_mm, FocalSource::kExifFocalPlane};
+      const double focal = *exif->focal_mm * px_per_mm;
+      if (plausible(focal)) return {focal, FocalSource::kExifFocalPlane};
     }
   }
   return {options.default_focal_factor * max_side, FocalSource::kDefaultGuess};

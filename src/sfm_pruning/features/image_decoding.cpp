@@ -25,7 +25,11 @@ bool JpegIsComplete(const std::string& bytes) {
   size_t pos = 2;
   // Segments up to the first scan, each skipped by its length.
   while (true) {
-    if (pos + 1 >= bytes.size() || at(pos) != kMarker) return false;
+    if (pos + 1 >= bytes.size()) return false;
+    if (at(pos) != kMarker) {  // stray bytes before a marker: libjpeg skips them with a warning
+      ++pos;
+      continue;
+    }
     const unsigned char marker = at(pos + 1);
     if (marker == kMarker) {  // fill byte
       ++pos;

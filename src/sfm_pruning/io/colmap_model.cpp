@@ -193,7 +193,7 @@ void WriteColmapModel(const SfmData& data, const fs::path& dir, ColmapModelForma
                       const FeaturesPerView* features) {
   // Converted before the folder is touched, so bad input leaves any existing model intact.
   const Model model = FromSfmData(data, features, dir);
-  WriteDirectoryAtomically(dir, [&](const fs::path& tmp) {
+  WriteDirectoryAtomically(dir, OutputFolderKind::kColmapModel, [&](const fs::path& tmp) {
     if (format == ColmapModelFormat::kBinary) {
       WriteBinaryModel(model, tmp);
     } else {

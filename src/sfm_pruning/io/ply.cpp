@@ -1,5 +1,6 @@
 #include "sfm_pruning/io/ply.hpp"
 
+#include <cmath>
 #include <cstring>
 #include <sstream>
 #include <string>
@@ -67,14 +68,17 @@ size_t PlyTypeSize(const std::string& type) {
   return 0;
 }
 
-// A colour channel of vertex `vertex`: 0-255 (a wider value, a float in 0-1 or a NaN would not
-// convert to a byte).
-uint8_t ColorChannel(double value, size_t vertex, const std::string& source) {
+// A colour channel of vertex `vertex` stored as `type`, as a byte: 16-bit colours are scaled from
+// 0-65535, every other type is read as 0-255. A value outside its range or a NaN is refused (it
+// would not convert to a byte).
+uint8_t ColorChannel(double stored, const std::string& type, size_t vertex, const std::string& source) {
+  const bool sixteen_bits = type == "ushort" || type == "uint16";
+  const double value = sixteen_bits ? stored * 255.0 / 65535.0 : stored;
   if (!(value >= 0.0 && value <= 255.0)) {
-    throw FileError(source, "vertex " + std::to_string(vertex) + ": colour value " + std::to_string(value) +
-                                " is outside 0-255");
+    throw FileError(source, "vertex " + std::to_string(vertex) + ": colour value " + std::to_string(stored) +
+                                " is outside " + (sixteen_bits ? "0-65535" : "0-255"));
   }
-  return static_cast<uint8_t>(value);
+  return static_cast<uint8_t>(std::lround(value));
 }
 
 double ReadBinaryScalar(const char* p, const std::string& type) {
@@ -173,9 +177,9 @@ SfmData ReadPlyPoints(const std::filesystem::path& path) {
       Landmark landmark;
       for (int axis = 0; axis < 3; ++axis) landmark.X[axis] = ReadBinaryScalar(row + offsets[axis], properties[axis].first);
       if (red >= 0 && green >= 0 && blue >= 0) {
-        landmark.color = {ColorChannel(ReadBinaryScalar(row + offsets[red], properties[red].first), v, source),
-                          ColorChannel(ReadBinaryScalar(row + offsets[green], properties[green].first), v, source),
-                          ColorChannel(ReadBinaryScalar(row + offsets[blue], properties[blue].first), v, source)};
+        landmark.color = {ColorChannel(ReadBinaryScalar(row + offsets[red], properties[red].first), properties[red].first, v, source),
+                          ColorChannel(ReadBinaryScalar(row + offsets[green], properties[green].first), properties[green].first, v, source),
+                          ColorChannel(ReadBinaryScalar(row + offsets[blue], properties[blue].first), properties[blue].first, v, source)};
       }
       data.structure[static_cast<IndexT>(v)] = landmark;
     }
@@ -189,8 +193,8 @@ SfmData ReadPlyPoints(const std::filesystem::path& path) {
       Landmark landmark;
       landmark.X = {values[0], values[1], values[2]};
       if (red >= 0 && green >= 0 && blue >= 0) {
-        landmark.color = {ColorChannel(values[red], v, source), ColorChannel(values[green], v, source),
-                          ColorChannel(values[blue], v, source)};
+        landmark.color = {ColorChannel(values[red], properties[red].first, v, source), ColorChannel(values[green], properties[green].first, v, source),
+                          ColorChannel(values[blue], properties[blue].first, v, source)};
       }
       data.structure[static_cast<IndexT>(v)] = landmark;
     }

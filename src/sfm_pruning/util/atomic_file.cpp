@@ -16,11 +16,20 @@ namespace fs = std::filesystem;
 
 namespace {
 
-fs::path TemporarySibling(const fs::path& path) {
-  fs::path tmp = path;
-  tmp += ".tmp." + std::to_string(::getpid());
-  return tmp;
+// "<name>.prunesfm-tmp.<pid>" and "<name>.prunesfm-old.<pid>": names no user file is likely to
+// have, so that the cleaning of leftovers (RemoveStaleTemporaries) only ever touches ours.
+constexpr char kTemporaryTag[] = "prunesfm-tmp";
+constexpr char kMovedAsideTag[] = "prunesfm-old";
+// Linux never gives a pid above this (PID_MAX_LIMIT): a larger number is not one of our suffixes.
+constexpr long long kMaxPid = 4194304;
+
+fs::path Sibling(const fs::path& path, const char* tag) {
+  fs::path sibling = path;
+  sibling += std::string(".") + tag + "." + std::to_string(::getpid());
+  return sibling;
 }
+
+fs::path TemporarySibling(const fs::path& path) { return Sibling(path, kTemporaryTag); }
 
 void EnsureParentExists(const fs::path& path) {
   const fs::path parent = path.parent_path();
@@ -30,14 +39,15 @@ void EnsureParentExists(const fs::path& path) {
   if (ec) throw FileError(parent.string(), "cannot create directory: " + ec.message());
 }
 
-// The pid in "<name>.tmp.<pid>" or "<name>.old.<pid>" when `entry` is such a sibling of `name`.
-bool ParseTemporaryPid(const std::string& entry, const std::string& name, const std::string& kind, pid_t* pid) {
-  const std::string prefix = name + "." + kind + ".";
+// The pid in "<name>.<tag>.<pid>" when `entry` is such a sibling of `name`.
+bool ParseTemporaryPid(const std::string& entry, const std::string& name, const char* tag, pid_t* pid) {
+  const std::string prefix = name + "." + tag + ".";
   if (entry.size() <= prefix.size() || entry.compare(0, prefix.size(), prefix) != 0) return false;
   long long value = 0;
   for (size_t k = prefix.size(); k < entry.size(); ++k) {
-    if (entry[k] < '0' || entry[k] > '9' || value > 1000000000LL) return false;
+    if (entry[k] < '0' || entry[k] > '9') return false;
     value = value * 10 + (entry[k] - '0');
+    if (value > kMaxPid) return false;
   }
   *pid = static_cast<pid_t>(value);
   return true;
@@ -51,7 +61,8 @@ bool ProcessIsRunning(pid_t pid) {
 
 }  // namespace
 
-void RemoveStaleTemporaries(const fs::path& path) {
+void RemoveStaleTemporaries(const fs::path& given) {
+  const fs::path path = WithoutTrailingSeparator(given);
   const fs::path parent = path.parent_path().empty() ? fs::path(".") : path.parent_path();
   const std::string name = path.filename().string();
   if (name.empty()) return;
@@ -60,8 +71,12 @@ void RemoveStaleTemporaries(const fs::path& path) {
   for (const fs::directory_entry& entry : fs::directory_iterator(parent, ec)) {
     const std::string entry_name = entry.path().filename().string();
     pid_t pid = 0;
-    if (ParseTemporaryPid(entry_name, name, "tmp", &pid) && !ProcessIsRunning(pid)) stale_tmp.push_back(entry.path());
-    if (ParseTemporaryPid(entry_name, name, "old", &pid) && !ProcessIsRunning(pid)) stale_old.push_back(entry.path());
+    if (ParseTemporaryPid(entry_name, name, kTemporaryTag, &pid) && !ProcessIsRunning(pid)) {
+      stale_tmp.push_back(entry.path());
+    }
+    if (ParseTemporaryPid(entry_name, name, kMovedAsideTag, &pid) && !ProcessIsRunning(pid)) {
+      stale_old.push_back(entry.path());
+    }
   }
   for (const fs::path& tmp : stale_tmp) fs::remove_all(tmp, ec);
   for (const fs::path& old : stale_old) {
@@ -97,9 +112,10 @@ void WriteFileAtomically(const fs::path& path, bool binary,
   }
 }
 
-void WriteDirectoryAtomically(const fs::path& dir,
+void WriteDirectoryAtomically(const fs::path& given, OutputFolderKind kind,
                               const std::function<void(const fs::path&)>& write) {
-  if (dir.empty()) throw Error("output folder: the path is empty");
+  if (given.empty()) throw Error("output folder: the path is empty");
+  const fs::path dir = WithoutTrailingSeparator(given);
   std::error_code ec;
   if (fs::exists(dir, ec) && !fs::is_directory(dir, ec)) {
     throw FileError(dir.string(), "exists and is not a folder; a file is not replaced by a folder");
@@ -112,11 +128,10 @@ void WriteDirectoryAtomically(const fs::path& dir,
   if (ec) throw FileError(tmp.string(), "cannot create directory: " + ec.message());
   try {
     write(tmp);
-    ClaimOutputFolder(tmp);
+    ClaimOutputFolder(tmp, kind);
     fs::path old;
     if (fs::exists(dir)) {
-      old = dir;
-      old += ".old." + std::to_string(::getpid());
+      old = Sibling(dir, kMovedAsideTag);
       fs::rename(dir, old, ec);
       if (ec) throw FileError(dir.string(), "cannot replace existing directory: " + ec.message());
     }

@@ -22,7 +22,7 @@ struct ConvertArguments {
 void RunConvert(const ConvertArguments& args) {
   if (args.output.empty()) throw sfm_pruning::Error("convert: the output path is empty");
   if (sfm_pruning::OutputModelFormat(args.output) == sfm_pruning::ModelFormat::kColmapModel) {
-    sfm_pruning::CheckOutputFolder(args.output, args.overwrite);
+    sfm_pruning::CheckOutputFolder(args.output, sfm_pruning::OutputFolderKind::kColmapModel, args.overwrite);
   }
   const sfm_pruning::SfmData data = sfm_pruning::ReadModel(args.input);
   sfm_pruning::ModelWriteOptions options;
@@ -47,7 +47,7 @@ void AddConvertCommand(CLI::App& app) {
   cmd->add_option("--output_type", args->output_type, "COLMAP folder encoding: BIN or TXT")
       ->check(CLI::IsMember({"BIN", "TXT"}))
       ->capture_default_str();
-  AddOverwriteFlag(cmd, &args->overwrite);
+  AddOverwriteFlag(cmd, &args->overwrite, OverwriteMeans::kReplaceTheFolder);
   cmd->callback([args]() { RunConvert(*args); });
 }
 

@@ -3,6 +3,7 @@
 // carry colours sampled from the images (docs/export.md).
 #include <CLI/CLI.hpp>
 
+#include <optional>
 #include <string>
 
 #include "sfm_pruning/export/dense_workspaces.hpp"
@@ -49,12 +50,17 @@ void RequireExtension(const ExportArguments& args, std::initializer_list<const c
   throw Error(args.output + ": --format " + args.format + " writes a file ending in " + list);
 }
 
-bool WritesFolder(const std::string& format) {
-  return format == "openmvs" || format == "colmap-undistorted" || format == "colmap";
+// The kind of folder a format writes; none for the formats that write one file.
+std::optional<sfm_pruning::OutputFolderKind> FolderKind(const std::string& format) {
+  using sfm_pruning::OutputFolderKind;
+  if (format == "openmvs") return OutputFolderKind::kOpenMvsWorkspace;
+  if (format == "colmap-undistorted") return OutputFolderKind::kColmapDenseWorkspace;
+  if (format == "colmap") return OutputFolderKind::kColmapModel;
+  return std::nullopt;
 }
 
 void RunExport(const ExportArguments& args) {
-  if (WritesFolder(args.format)) sfm_pruning::CheckOutputFolder(args.output, args.overwrite);
+  if (const auto kind = FolderKind(args.format)) sfm_pruning::CheckOutputFolder(args.output, *kind, args.overwrite);
   sfm_pruning::SfmData data = sfm_pruning::ReadModel(args.model);
   const std::string image_root = args.images.empty() ? data.root_path : args.images;
   if (image_root.empty() && NeedsImages(args.format)) {
@@ -132,7 +138,7 @@ void AddExportCommand(CLI::App& app) {
                   "Threads for reading and undistorting images (output does not depend on it)")
       ->check(PositiveValue())
       ->capture_default_str();
-  AddOverwriteFlag(cmd, &args->overwrite);
+  AddOverwriteFlag(cmd, &args->overwrite, OverwriteMeans::kReplaceTheFolder);
   cmd->callback([args]() { RunExport(*args); });
 }
 

@@ -29,7 +29,7 @@ void RunReconstruct(const ReconstructArguments& args) {
   if (!args.sfm_data.empty() && args.matches_dir.empty()) {
     throw sfm_pruning::Error("reconstruct: --sfm_data needs --matches_dir");
   }
-  PrepareOutputFolder(args.output, args.overwrite);
+  PrepareRunFolder(args.output, args.overwrite);
   const auto start = std::chrono::steady_clock::now();
   const ReconstructionInput input = args.database.empty()
                                         ? ReadOpenMvgInput(args.sfm_data, args.matches_dir, args.match_file,
@@ -53,7 +53,7 @@ void AddReconstructCommand(CLI::App& app) {
   cmd->add_option("--match_file", args->match_file, "Match file (default: matches.e/f/putative .bin/.txt)");
   cmd->add_option("--database", args->database, "COLMAP database.db");
   cmd->add_option("--output,-o", args->output, "Output folder")->required();
-  AddOverwriteFlag(cmd, &args->overwrite);
+  AddOverwriteFlag(cmd, &args->overwrite, OverwriteMeans::kWriteInto);
   AddEngineOptions(cmd, &args->engine);
   cmd->callback([args]() { RunReconstruct(*args); });
 }

@@ -45,7 +45,7 @@ void RunFromDatabase(const RunArguments& args) {
   if (args.image_path.empty() || args.output.empty()) {
     throw Error("run: --database needs --image_path and --output_path");
   }
-  PrepareOutputFolder(args.output, args.overwrite);
+  PrepareRunFolder(args.output, args.overwrite);
   const auto start = std::chrono::steady_clock::now();
   ReconstructionInput input = ReadColmapInput(args.database);
   input.scene.root_path = args.image_path;
@@ -71,7 +71,7 @@ void RunFromImages(const RunArguments& args, const fs::path& images, const fs::p
   const int threads = FrontEndThreads(args.num_threads_given ? args.engine.num_threads : 0);
   const fs::path matches_dir = out / "matches";
   const fs::path sfm_path = matches_dir / "sfm_data.json";
-  PrepareOutputFolder(out, args.overwrite);
+  PrepareRunFolder(out, args.overwrite);
   RunManifest manifest(out / "run_manifest.json");
   using sfm_pruning::SfmDataParts;
   const auto read_scene = [&]() {
@@ -118,7 +118,7 @@ void RunFromImages(const RunArguments& args, const fs::path& images, const fs::p
 // Without ../shared: the synthetic `clean` scene (features and matches, no images) through the
 // same engine, so that a fresh checkout still runs end to end.
 void RunSyntheticFallback(const RunArguments& args, const fs::path& out) {
-  PrepareOutputFolder(out, args.overwrite);
+  PrepareRunFolder(out, args.overwrite);
   sfm_pruning::SyntheticSceneOptions options;
   options.scene = "clean";
   options.seed = args.engine.seed;
@@ -176,7 +176,7 @@ void AddRunCommand(CLI::App& app) {
   cmd->add_option("--image_path", args->image_path, "With --database: image folder (recorded, not read)");
   cmd->add_option("--output_path,--output", args->output, "With --database: output folder");
   cmd->add_flag("--force", args->force, "Rerun every stage, ignoring OUT/run_manifest.json");
-  AddOverwriteFlag(cmd, &args->overwrite);
+  AddOverwriteFlag(cmd, &args->overwrite, OverwriteMeans::kWriteInto);
   AddEngineOptions(cmd, &args->engine);
   AddInitOptions(cmd, &args->init);
   AddFeatureOptions(cmd, &args->features);

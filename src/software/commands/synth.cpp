@@ -150,7 +150,7 @@ void AddSynthCommand(CLI::App& app) {
   sfm_pruning::SyntheticSceneOptions& o = *options;
   cmd->add_option("--scene", o.scene, "Scene: a fixed one, or a family_* whose seed draws the whole scene")->required()->check(CLI::IsMember(sfm_pruning::SyntheticSceneNames()));
   cmd->add_option("--output,-o", *output, "Output directory (replaced atomically)")->required();
-  AddOverwriteFlag(cmd, overwrite.get());
+  AddOverwriteFlag(cmd, overwrite.get(), OverwriteMeans::kReplaceTheFolder);
   cmd->add_option("--seed", o.seed, "Random seed: same options and seed give identical files")->check(SeedValue());
   cmd->add_option("--num_views", o.num_views, "Number of views (0: scene default)");
   cmd->add_option("--image_width", o.image_width, "Image width in pixels (0: scene default)");
@@ -187,7 +187,7 @@ void AddSynthCommand(CLI::App& app) {
   cmd->add_option("--num_threads", o.num_threads, "Threads for matching (the output does not depend on it)")
       ->capture_default_str();
   cmd->callback([options, output, overwrite, drawn_by_families]() {
-    sfm_pruning::CheckOutputFolder(*output, *overwrite);
+    sfm_pruning::CheckOutputFolder(*output, sfm_pruning::OutputFolderKind::kSyntheticScene, *overwrite);
     if (sfm_pruning::IsSyntheticFamily(options->scene)) {
       for (const CLI::Option* option : drawn_by_families) {
         if (option->count() > 0) {
@@ -197,7 +197,7 @@ void AddSynthCommand(CLI::App& app) {
       }
     }
     const SyntheticScene scene = sfm_pruning::GenerateSyntheticScene(*options, TerminalProgressBar());
-    sfm_pruning::WriteDirectoryAtomically(*output, [&](const fs::path& dir) { WriteScene(scene, dir); });
+    sfm_pruning::WriteDirectoryAtomically(*output, sfm_pruning::OutputFolderKind::kSyntheticScene, [&](const fs::path& dir) { WriteScene(scene, dir); });
     size_t num_matches = 0;
     for (const auto& [pair, matches] : scene.putative_matches) num_matches += matches.size();
     Info("wrote " + scene.name + " (" + std::to_string(scene.ground_truth.views.size()) + " views, " +
