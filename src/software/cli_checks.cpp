@@ -20,6 +20,15 @@ std::string CheckNumber(const std::string& input, const std::function<bool(doubl
   return {};
 }
 
+// Empty when `input` is a whole number from 0 to 2^64 - 1, else the reason.
+std::string CheckUnsigned64(std::string& input) {
+  const bool digits = !input.empty() && input.find_first_not_of("0123456789") == std::string::npos;
+  errno = 0;
+  if (digits) std::strtoull(input.c_str(), nullptr, 10);
+  if (!digits || errno == ERANGE) return "expected a whole number from 0 to 18446744073709551615, got " + input;
+  return {};
+}
+
 std::string Format(double value) {
   char text[32];
   std::snprintf(text, sizeof(text), "%g", value);
@@ -49,16 +58,19 @@ CLI::Validator RangeValue(double min, double max) {
       "NUMBER " + range);
 }
 
-CLI::Validator SeedValue() {
-  return CLI::Validator(
-      [](std::string& input) -> std::string {
-        const bool digits = !input.empty() && input.find_first_not_of("0123456789") == std::string::npos;
-        errno = 0;
-        if (digits) std::strtoull(input.c_str(), nullptr, 10);
-        if (!digits || errno == ERANGE) return "expected a whole number from 0 to 18446744073709551615, got " + input;
-        return {};
-      },
-      "UINT64");
+CLI::Validator SeedValue() { return CLI::Validator(CheckUnsigned64, "UINT64"); }
+
+void CheckEveryNumber(CLI::App* app) {
+  // Validators without a name leave the option's help as it was.
+  const CLI::Validator finite(
+      [](std::string& input) { return CheckNumber(input, [](double) { return true; }, "finite"); }, "");
+  const CLI::Validator unsigned_64(CheckUnsigned64, "");
+  for (CLI::Option* option : app->get_options()) {
+    const std::string type = option->get_type_name();
+    if (type.rfind("FLOAT", 0) == 0) option->check(finite);
+    if (type.rfind("UINT", 0) == 0) option->check(unsigned_64);
+  }
+  for (CLI::App* subcommand : app->get_subcommands([](CLI::App*) { return true; })) CheckEveryNumber(subcommand);
 }
 
 }  // namespace prunesfm

@@ -20,4 +20,10 @@ CLI::Validator RangeValue(double min, double max);
 // Accepts a seed: a whole number from 0 to 2^64 - 1 (larger ones would wrap around silently).
 CLI::Validator SeedValue();
 
+// The net under every numeric option of `app` and its subcommands, whatever checks they carry: a
+// FLOAT must be finite ("--thresholds inf" would otherwise reach the code as infinity) and a UINT
+// a whole number that fits in 64 bits (CLI11 reads "-1" as 2^64 - 1 and saturates 2^64). Call
+// once, after every option is added.
+void CheckEveryNumber(CLI::App* app);
+
 }  // namespace prunesfm

@@ -2,9 +2,11 @@
 
 #include <unistd.h>
 
+#include <algorithm>
 #include <cstdio>
 #include <mutex>
 
+#include "sfm_pruning/util/error.hpp"
 #include "sfm_pruning/util/output_folder.hpp"
 
 namespace prunesfm {
@@ -38,6 +40,29 @@ void PrepareRunFolder(const std::filesystem::path& dir, bool overwrite) {
     sfm_pruning::ClaimOutputFolder(dir, sfm_pruning::OutputFolderKind::kRun);
   } else {
     std::filesystem::create_directories(dir);
+  }
+}
+
+void RefuseOutputOverInput(const std::filesystem::path& output, const std::vector<std::filesystem::path>& inputs) {
+  namespace fs = std::filesystem;
+  std::error_code error;
+  if (output.empty() || !fs::exists(output, error)) return;
+  const fs::path output_path = fs::weakly_canonical(output, error);
+  if (error) return;
+  for (const fs::path& input : inputs) {
+    if (input.empty() || !fs::exists(input, error)) continue;
+    const fs::path input_path = fs::weakly_canonical(input, error);
+    if (error) continue;
+    if (input_path == output_path) {
+      throw sfm_pruning::Error(output.string() + ": the output is the input; write to another path");
+    }
+    // Is input_path inside output_path?
+    const auto [end, unused] = std::mismatch(output_path.begin(), output_path.end(), input_path.begin(),
+                                             input_path.end());
+    if (end == output_path.end()) {
+      throw sfm_pruning::Error(output.string() + ": holds the input " + input.string() +
+                               ", which writing the output would replace; write to another path");
+    }
   }
 }
 

@@ -4,6 +4,7 @@
 #include <chrono>
 #include <filesystem>
 #include <string>
+#include <vector>
 
 #include <CLI/CLI.hpp>
 
@@ -31,6 +32,11 @@ CLI::Option* AddOverwriteFlag(CLI::App* cmd, bool* overwrite, OverwriteMeans mea
 // or `overwrite` (util/output_folder.hpp), then creates it and marks it when it is the project's
 // (a user's folder written into through `overwrite` stays unmarked). Call before any long work.
 void PrepareRunFolder(const std::filesystem::path& dir, bool overwrite);
+
+// Refuses (sfm_pruning::Error naming `output`) an output that is one of `inputs` or a folder
+// holding one of them: writing it would replace what is being read. Paths that do not exist yet
+// are fine. Call before any work.
+void RefuseOutputOverInput(const std::filesystem::path& output, const std::vector<std::filesystem::path>& inputs);
 
 // Prints an informational line on stderr ("prunesfm: ...").
 void Info(const std::string& message);

@@ -8,6 +8,7 @@
 #include <exception>
 
 #include "sfm_pruning/util/error.hpp"
+#include "software/cli_checks.hpp"
 #include "software/cli_support.hpp"
 #include "software/commands.hpp"
 
@@ -20,6 +21,14 @@ int main(int argc, char** argv) {
       "Run 'prunesfm <subcommand> --help' for the options of each step.",
       "prunesfm"};
   app.require_subcommand(1);
+  // A malformed command line gets the same one-line error as a bad file, and where to look.
+  app.failure_message([](const CLI::App* parsed, const CLI::Error& error) {
+    std::string help = "prunesfm --help";
+    for (const CLI::App* subcommand : parsed->get_subcommands()) {
+      help = "prunesfm " + subcommand->get_name() + " --help";
+    }
+    return "prunesfm: error: " + std::string(error.what()) + " (see '" + help + "')\n";
+  });
   app.set_version_flag("--version", "prunesfm 0.1.0");
 
   prunesfm::AddInitCommand(app);
@@ -34,6 +43,7 @@ int main(int argc, char** argv) {
   prunesfm::AddSynthCommand(app);
   prunesfm::AddReportCommand(app);
   prunesfm::AddEpipolarCommand(app);
+  prunesfm::CheckEveryNumber(&app);
 
   try {
     app.parse(argc, argv);

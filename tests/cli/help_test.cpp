@@ -67,7 +67,12 @@ TEST(Cli, OutOfRangeNumbersSayWhatIsExpectedInOneLine) {
       {{"run", "--seed", "99999999999999999999999"}, "--seed: expected a whole number from 0 to"},
       {{"run", "--seed", "-1"}, "--seed: expected a whole number from 0 to"},
       {{"evaluate", "--inlier_threshold_scene_fraction", "-1"},
-       "--inlier_threshold_scene_fraction: must be positive, got -1"}};
+       "--inlier_threshold_scene_fraction: must be positive, got -1"},
+      // The net under every number (CheckEveryNumber), for options without a check of their own.
+      {{"evaluate", "--thresholds", "inf"}, "--thresholds: expected a finite number, got inf"},
+      {{"report", "--num_checks", "-1"}, "--num_checks: expected a whole number from 0 to"},
+      {{"report", "--num_checks", "18446744073709551616"}, "--num_checks: expected a whole number from 0 to"},
+      {{"synth", "--clutter_ratio", "1e400"}, "--clutter_ratio: expected a finite number, got 1e400"}};
   for (const auto& [arguments, message] : cases) {
     std::vector<std::string> argv = arguments;
     for (const char* rest : {"--database", "/nonexistent/database.db", "--image_path", "/nonexistent",
@@ -78,6 +83,10 @@ TEST(Cli, OutOfRangeNumbersSayWhatIsExpectedInOneLine) {
     EXPECT_NE(result.exit_code, 0) << arguments[1];
     EXPECT_NE(result.err.find(message), std::string::npos) << result.err;
     EXPECT_LT(result.err.find('\n'), 200u) << result.err;  // no 309-digit bound
+    // One line, prefixed as a bad file's error is, saying where the options are listed.
+    EXPECT_EQ(CountLines(result.err), 1) << result.err;
+    EXPECT_EQ(result.err.rfind("prunesfm: error: ", 0), 0u) << result.err;
+    EXPECT_NE(result.err.find("(see 'prunesfm " + arguments[0] + " --help')"), std::string::npos) << result.err;
   }
 }
 

@@ -89,14 +89,36 @@ TEST(CliOutputFolder, AnOutputOfAnotherKindIsNotReplaced) {
                                          (scratch / "scene" / "sfm_data.json").string(), "--matches_dir",
                                          (scratch / "scene" / "matches").string(), "-o", (scratch / "run").string()});
   ASSERT_EQ(run.exit_code, 0) << run.err;
-  const CommandResult exported = RunPrunesfm({"export", "-i", (scratch / "run" / "sfm_data.json").string(), "--format",
-                                              "colmap", "-o", (scratch / "run").string()});
+  const CommandResult exported = RunPrunesfm({"export", "-i", (scratch / "scene" / "sfm_data.json").string(),
+                                              "--format", "colmap", "-o", (scratch / "run").string()});
   EXPECT_EQ(exported.exit_code, 1);
   EXPECT_NE(exported.err.find("holds a prunesfm run, not a COLMAP model"), std::string::npos) << exported.err;
   EXPECT_TRUE(fs::exists(scratch / "run" / "timings.json"));
   const CommandResult into_scene = RunPrunesfm({"convert", "-i", (scratch / "run" / "sfm_data.json").string(), "-o",
                                                 (scratch / "scene").string()});
   EXPECT_EQ(into_scene.exit_code, 1);
+  EXPECT_TRUE(fs::exists(scratch / "scene" / "database.db"));
+}
+
+// Writing the output would replace what is read: refused before any work, --overwrite or not.
+TEST(CliOutputFolder, AnOutputOverItsInputIsRefused) {
+  const fs::path scratch = ScratchDir("cli_output_over_input");
+  ASSERT_EQ(Synth(scratch / "scene").exit_code, 0);
+  const fs::path model = scratch / "scene" / "ground_truth" / "sfm_data.json";
+  ASSERT_EQ(RunPrunesfm({"convert", "-i", model.string(), "-o", (scratch / "model.bin").string()}).exit_code, 0);
+  const std::string before = ReadText(scratch / "model.bin");
+  const CommandResult same_file =
+      RunPrunesfm({"convert", "-i", (scratch / "model.bin").string(), "-o", (scratch / "model.bin").string()});
+  EXPECT_EQ(same_file.exit_code, 1);
+  EXPECT_EQ(CountLines(same_file.err), 1) << same_file.err;
+  EXPECT_NE(same_file.err.find("model.bin: the output is the input"), std::string::npos) << same_file.err;
+  EXPECT_EQ(ReadText(scratch / "model.bin"), before);
+  // A folder holding the input, even one --overwrite may replace.
+  const CommandResult holder = RunPrunesfm({"export", "-i", model.string(), "--format", "colmap", "-o",
+                                            (scratch / "scene").string(), "--overwrite"});
+  EXPECT_EQ(holder.exit_code, 1);
+  EXPECT_NE(holder.err.find("holds the input"), std::string::npos) << holder.err;
+  EXPECT_TRUE(fs::exists(model));
   EXPECT_TRUE(fs::exists(scratch / "scene" / "database.db"));
 }
 

@@ -1,6 +1,7 @@
 // Ground truth of synthetic scenes: determinism, reprojection, feature ids.
 #include <cmath>
 #include <cstring>
+#include <limits>
 
 #include <gtest/gtest.h>
 
@@ -135,6 +136,20 @@ TEST(SyntheticScene, RejectsBadOptions) {
   options = SmallOptions("clean");
   options.num_views = 1;
   EXPECT_THROW(GenerateSyntheticScene(options), Error);
+  // Infinite clutter would never finish and an infinite density would exhaust memory: refused
+  // before any work, as is NaN, which fails every comparison.
+  const double inf = std::numeric_limits<double>::infinity();
+  const double nan = std::numeric_limits<double>::quiet_NaN();
+  for (double SyntheticSceneOptions::*field :
+       {&SyntheticSceneOptions::clutter_ratio, &SyntheticSceneOptions::point_density_scale,
+        &SyntheticSceneOptions::noise_px, &SyntheticSceneOptions::focal_px, &SyntheticSceneOptions::max_incidence_deg,
+        &SyntheticSceneOptions::street_module_width_m}) {
+    for (const double value : {inf, nan, 1e308}) {
+      options = SmallOptions("clean");
+      options.*field = value;
+      EXPECT_THROW(GenerateSyntheticScene(options), Error) << value;
+    }
+  }
 }
 
 }  // namespace

@@ -58,25 +58,28 @@ TEST(ImageListing, UndecodableImagesAreSkippedWithAReason) {
   EXPECT_EQ(listing.skipped[1].reason, "empty file");
 }
 
-// libjpeg decodes a JPEG cut short into a picture with grey rows and only warns on stderr; such a
-// file is skipped, while bytes after the end of the image (camera trailers) are allowed.
-TEST(ImageListing, TruncatedJpegsAreSkippedTrailersAllowed) {
+// libjpeg decodes a JPEG cut short into a picture with grey rows and only warns on stderr, libpng
+// prints an error of its own; such files are skipped with one reason, while bytes after the end of
+// the image (camera trailers) are allowed.
+TEST(ImageListing, TruncatedJpegsAndPngsAreSkippedTrailersAllowed) {
   const fs::path dir = ScratchDir("listing_truncated_jpeg");
   WriteImage(dir / "whole.jpg", 256, 192);
-  const std::string bytes = ReadFileToString(dir / "whole.jpg");
-  EXPECT_TRUE(JpegIsComplete(bytes));
-  const std::string cut = bytes.substr(0, bytes.size() / 2);
-  EXPECT_FALSE(JpegIsComplete(cut));
-  EXPECT_FALSE(JpegIsComplete(bytes.substr(0, bytes.size() - 2)));  // only the end marker missing
-  std::ofstream(dir / "cut.jpg", std::ios::binary) << cut;
-  std::ofstream(dir / "trailer.jpg", std::ios::binary) << bytes << "TRAILER\xff\xd8 appended data";
+  WriteImage(dir / "whole.png", 256, 192);
+  const std::string jpeg = ReadFileToString(dir / "whole.jpg");
+  const std::string png = ReadFileToString(dir / "whole.png");
+  std::ofstream(dir / "cut.jpg", std::ios::binary) << jpeg.substr(0, jpeg.size() / 2);
+  std::ofstream(dir / "cut.png", std::ios::binary) << png.substr(0, png.size() / 2);
+  std::ofstream(dir / "trailer.jpg", std::ios::binary) << jpeg << "TRAILER\xff\xd8 appended data";
   const ImageListing listing = ListImages(dir, {});
-  ASSERT_EQ(listing.scene.views.size(), 2u);
+  ASSERT_EQ(listing.scene.views.size(), 3u);
   EXPECT_EQ(listing.scene.views.at(0).filename, "trailer.jpg");
   EXPECT_EQ(listing.scene.views.at(1).filename, "whole.jpg");
-  ASSERT_EQ(listing.skipped.size(), 1u);
+  EXPECT_EQ(listing.scene.views.at(2).filename, "whole.png");
+  ASSERT_EQ(listing.skipped.size(), 2u);
   EXPECT_EQ(listing.skipped[0].filename, "cut.jpg");
   EXPECT_EQ(listing.skipped[0].reason, "does not decode (a JPEG cut short: no end-of-image marker)");
+  EXPECT_EQ(listing.skipped[1].filename, "cut.png");
+  EXPECT_EQ(listing.skipped[1].reason, "does not decode (a PNG cut short: no IEND chunk)");
 }
 
 TEST(ImageListing, GroupsCamerasBySizeAndGuessesTheFocal) {

@@ -65,7 +65,10 @@ TEST(OpenMvgMatches, RandomMatchesRoundTripExactlyInBothFormats) {
 
 TEST(OpenMvgMatches, DropsPairsOfAbsentViewsAndChecksFeatureIndices) {
   SfmData scene;
-  for (IndexT id : {0u, 1u, 2u}) scene.views[id].id_view = id;
+  for (IndexT id : {0u, 1u, 2u}) {
+    scene.views[id].id_view = id;
+    scene.views[id].filename = "image_" + std::to_string(id) + ".jpg";
+  }
   MatchReadOptions options;
   options.sfm_data = &scene;
   MatchReadReport report;
@@ -85,6 +88,8 @@ TEST(OpenMvgMatches, DropsPairsOfAbsentViewsAndChecksFeatureIndices) {
   EXPECT_NE(message.find("matches.txt"), std::string::npos) << message;
   EXPECT_NE(message.find("pair (0, 1)"), std::string::npos) << message;
   EXPECT_NE(message.find("feature index 3"), std::string::npos) << message;
+  // A .feat file cut short shows up as indices past its end: the message names it.
+  EXPECT_NE(message.find("(3 features in image_1.feat)"), std::string::npos) << message;
   features.erase(1);
   EXPECT_NE(ErrorMessage([&] { ReadOpenMvgMatches(Golden("matches.txt"), options); }).find("no features"),
             std::string::npos);

@@ -96,6 +96,8 @@ TEST(SfmData, ValidationRejectsNumbersNoCameraOrPointHas) {
       {CameraIntrinsics::Pinhole(640, 480, 1e308, 320, 240), "intrinsic 0: focal length 1e+308 px is over 1000"},
       {CameraIntrinsics::Pinhole(640, 480, 500, nan, 240), "intrinsic 0: a parameter is not a finite number (nan)"},
       {CameraIntrinsics::Pinhole(0, 480, 500, 320, 240), "intrinsic 0: image size 0x480 is not a real image's"},
+      {CameraIntrinsics::Pinhole(640, 480, 500, 1e308, 240),
+       "intrinsic 0: principal point (1e+308, 240) is over 1000 image sides from the image"},
   };
   for (const auto& [intrinsics, message] : cameras) {
     SfmData data = TwoViewScene();
@@ -117,15 +119,32 @@ TEST(SfmData, ValidationRejectsNumbersNoCameraOrPointHas) {
   SfmData reflection = TwoViewScene();
   reflection.poses[0].rotation(2, 2) = -1.0;
   EXPECT_NE(ValueProblem(reflection), "");
-  SfmData far_centre = TwoViewScene();
-  far_centre.poses[0].center.x() = inf;
-  EXPECT_EQ(ValueProblem(far_centre), "scene.json: pose 0: the centre is not finite");
+  // A principal point off the image (a crop of a larger frame) is a real camera.
+  SfmData cropped = TwoViewScene();
+  cropped.intrinsics[0] = CameraIntrinsics::Pinhole(640, 480, 500, 2000, -900);
+  EXPECT_EQ(ValueProblem(cropped), "");
+  for (const double far : {inf, 1e308, -2e12}) {
+    SfmData far_centre = TwoViewScene();
+    far_centre.poses[0].center.x() = far;
+    EXPECT_EQ(ValueProblem(far_centre), "scene.json: pose 0: the centre is not finite or beyond ±1e+12");
+    SfmData far_point = TwoViewScene();
+    far_point.structure[0].X.z() = far;
+    EXPECT_EQ(ValueProblem(far_point), "scene.json: landmark 0: the position is not finite or beyond ±1e+12");
+  }
+  // Geocentric (ECEF) coordinates in metres are a real scene.
+  SfmData geocentric = TwoViewScene();
+  for (auto& [id, pose] : geocentric.poses) pose.center += Eigen::Vector3d(4.2e6, 0.7e6, 4.7e6);
+  for (auto& [id, landmark] : geocentric.structure) landmark.X += Eigen::Vector3d(4.2e6, 0.7e6, 4.7e6);
+  EXPECT_EQ(ValueProblem(geocentric), "");
   SfmData nan_point = TwoViewScene();
   nan_point.structure[0].X.z() = nan;
-  EXPECT_EQ(ValueProblem(nan_point), "scene.json: landmark 0: the position is not finite");
-  SfmData nan_pixel = TwoViewScene();
-  nan_pixel.structure[0].observations[0].x.x() = nan;
-  EXPECT_EQ(ValueProblem(nan_pixel), "scene.json: landmark 0: its observation in view 0 is not a finite pixel");
+  EXPECT_EQ(ValueProblem(nan_point), "scene.json: landmark 0: the position is not finite or beyond ±1e+12");
+  for (const double far : {nan, 1e308}) {
+    SfmData far_pixel = TwoViewScene();
+    far_pixel.structure[0].observations[0].x.x() = far;
+    EXPECT_EQ(ValueProblem(far_pixel),
+              "scene.json: landmark 0: its observation in view 0 is not finite or beyond ±1e+09 pixels");
+  }
 }
 
 TEST(View, RelativeImagePath) {

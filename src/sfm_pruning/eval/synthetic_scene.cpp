@@ -1,6 +1,7 @@
 #include "sfm_pruning/eval/synthetic_scene.hpp"
 
 #include <algorithm>
+#include <cmath>
 #include <cstdio>
 #include <functional>
 #include <thread>
@@ -59,17 +60,25 @@ SyntheticSceneOptions ResolveDefaults(SyntheticSceneOptions o, SceneDescription*
   if (o.loop_straight_per_radius == 0.0) o.loop_straight_per_radius = 3.0;
   if (o.num_threads == 0) o.num_threads = 1;
 
-  Require(o.num_views >= 2, "num_views must be at least 2");
+  const SyntheticLimits& limits = kSyntheticLimits;
+  Require(o.num_views >= 2 && o.num_views <= limits.max_views,
+          "num_views must be in [2, " + std::to_string(limits.max_views) + "]");
   Require(!(large || o.scene == "family_loop") || o.num_views >= 4 * o.laps,
           o.scene + " needs at least 4 views per lap");
-  Require(o.focal_px > 0.0, "focal_px must be positive");
-  Require(o.noise_px >= 0.0, "noise_px must be >= 0");
-  Require(o.descriptor_noise >= 0.0, "descriptor_noise must be >= 0");
+  Require(o.image_width <= limits.max_image_side_px && o.image_height <= limits.max_image_side_px,
+          "image_width and image_height must be at most " + std::to_string(limits.max_image_side_px));
+  // The comparisons are written so that NaN fails each of them.
+  Require(o.focal_px > 0.0 && o.focal_px <= limits.max_focal_image_sides * std::max(o.image_width, o.image_height),
+          "focal_px must be positive and at most 1000 image sides");
+  Require(o.noise_px >= 0.0 && o.noise_px <= limits.max_noise_px, "noise_px must be in [0, 1000]");
+  Require(o.descriptor_noise >= 0.0 && o.descriptor_noise <= limits.max_descriptor_noise,
+          "descriptor_noise must be in [0, 10]");
   Require(o.dropout >= 0.0 && o.dropout < 1.0, "dropout must be in [0, 1)");
-  Require(o.clutter_ratio >= 0.0, "clutter_ratio must be >= 0");
-  Require(o.max_incidence_deg > 0.0, "max_incidence_deg must be positive");
-  Require(o.max_distance_m > 0.0, "max_distance_m must be positive");
-  Require(o.point_density_scale > 0.0, "point_density_scale must be positive");
+  Require(o.clutter_ratio >= 0.0 && o.clutter_ratio <= limits.max_clutter_ratio, "clutter_ratio must be in [0, 100]");
+  Require(o.max_incidence_deg > 0.0 && o.max_incidence_deg <= 180.0, "max_incidence_deg must be in (0, 180]");
+  Require(o.max_distance_m > 0.0 && std::isfinite(o.max_distance_m), "max_distance_m must be positive");
+  Require(o.point_density_scale > 0.0 && o.point_density_scale <= limits.max_point_density_scale,
+          "point_density_scale must be in (0, 100]");
   Require(o.ratio_test > 0.0 && o.ratio_test <= 1.0, "ratio_test must be in (0, 1]");
   Require(o.outlier_ratio >= 0.0 && o.outlier_ratio < 1.0, "outlier_ratio must be in [0, 1)");
   Require(o.min_matches >= 0, "min_matches must be >= 0");
@@ -79,7 +88,8 @@ SyntheticSceneOptions ResolveDefaults(SyntheticSceneOptions o, SceneDescription*
   Require(o.loop_straight_per_radius > 0.0 && o.loop_straight_per_radius <= 100.0,
           "loop_straight_per_radius must be in (0, 100]");
   Require(o.twin_fraction <= 0.9, "twin_fraction must be in [0, 0.9]");
-  Require(o.street_module_width_m >= 2.0, "street_module_width must be at least 2 m (the shop sign is 2 m wide)");
+  Require(o.street_module_width_m >= 2.0 && o.street_module_width_m <= limits.max_street_module_width_m,
+          "street_module_width must be in [2, 1000] m (the shop sign is 2 m wide)");
   Require(o.num_threads >= 1, "num_threads must be at least 1");
   return o;
 }

@@ -27,6 +27,21 @@
 namespace sfm_pruning {
 
 // Every option with a value of 0 (or a negative value where noted) takes the scene's default.
+// Bounds of the options that GenerateSyntheticScene checks (and the CLI's validators quote): past them
+// a scene is no camera's (a focal of a million image sides) or the generator runs out of memory
+// or time (infinitely many clutter keypoints).
+struct SyntheticLimits {
+  int max_views = 1000000;
+  uint32_t max_image_side_px = 100000;
+  double max_focal_image_sides = 1000.0;
+  double max_noise_px = 1000.0;
+  double max_descriptor_noise = 10.0;
+  double max_clutter_ratio = 100.0;
+  double max_point_density_scale = 100.0;
+  double max_street_module_width_m = 1000.0;
+};
+inline constexpr SyntheticLimits kSyntheticLimits;
+
 struct SyntheticSceneOptions {
   std::string scene = "orbit_symmetric";
   uint64_t seed = 0;

@@ -16,14 +16,8 @@ struct DecodedImage {
   bool ok() const { return problem.empty(); }
 };
 
-// A JPEG file (it starts with the SOI marker) must also end its image: libjpeg decodes a file cut
-// short into a picture whose missing rows are grey, with only a warning on stderr.
+// A JPEG or PNG cut short does not decode (util/image_file_integrity.hpp): libjpeg would give a
+// picture whose missing rows are grey.
 DecodedImage DecodeGrayImage(const std::filesystem::path& path);
-
-// Whether `bytes`, which start with a JPEG's SOI marker, hold the end-of-image marker after the
-// first scan. The segments before the scan are skipped by their lengths, so the end marker of an
-// EXIF thumbnail does not count; inside a scan a 0xFF byte is always followed by 0x00 or a restart
-// marker, so 0xFF 0xD9 there is the image's end. Bytes after it (camera trailers) are allowed.
-bool JpegIsComplete(const std::string& bytes);
 
 }  // namespace sfm_pruning

@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "sfm_pruning/io/colmap_binary.hpp"
+#include "sfm_pruning/io/openmvg_features.hpp"
 #include "sfm_pruning/io/openmvg_text_tokens.hpp"
 #include "sfm_pruning/util/atomic_file.hpp"
 #include "sfm_pruning/util/error.hpp"
@@ -77,6 +78,19 @@ class MatchCollector {
     return found->second.size();
   }
 
+  // "362 features", naming the view's feature file when the views are known: a .feat file cut
+  // short shows up here, as indices past its end.
+  std::string FeatureCountText(IndexT view, size_t count) const {
+    std::string text = std::to_string(count) + " features";
+    if (options_.sfm_data != nullptr) {
+      const auto found = options_.sfm_data->views.find(view);
+      if (found != options_.sfm_data->views.end()) {
+        text += " in " + FeatureFilePath(found->second, {}, ".feat").string();
+      }
+    }
+    return text;
+  }
+
   void CheckFeatureIndices(IndexT I, IndexT J, const std::vector<FeatureMatch>& pair_matches,
                            const std::string& where) const {
     const size_t count_i = FeatureCount(I, I, J, where);
@@ -87,7 +101,7 @@ class MatchCollector {
         throw FileError(source_, where + ": " + PairName(I, J) + ": feature index " +
                                      std::to_string(bad_i ? m.i : m.j) + " out of range for view " +
                                      std::to_string(bad_i ? I : J) + " (" +
-                                     std::to_string(bad_i ? count_i : count_j) + " features)");
+                                     FeatureCountText(bad_i ? I : J, bad_i ? count_i : count_j) + ")");
       }
     }
   }

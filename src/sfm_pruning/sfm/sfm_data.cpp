@@ -88,7 +88,14 @@ void ValidateSfmData(const SfmData& data, const std::string& source, bool intrin
 namespace {
 
 constexpr double kMaxImageSidePx = 1e6;
-constexpr double kMaxFocalPerImageSide = 1000.0;
+// Focal lengths and principal-point offsets beyond this many image sides are unit mistakes, not
+// lenses (a field of view under 0.06 degrees).
+constexpr double kMaxImageSidesAway = 1000.0;
+// Scene coordinates (any unit: metres, feet, even ECEF) stay far below this; beyond it squared
+// distances lose every digit of the scene next to the offset, and 1e308 overflows to infinity.
+constexpr double kMaxSceneCoordinate = 1e12;
+// Pixel coordinates: kMaxImageSidesAway sides of the largest image kMaxImageSidePx allows.
+constexpr double kMaxPixelCoordinate = kMaxImageSidesAway * kMaxImageSidePx;
 // Rotations read from text files carry rounding: |RᵀR − I| and |det R − 1| within this are proper.
 constexpr double kRotationTolerance = 1e-3;
 
@@ -99,6 +106,13 @@ std::string Number(double value) {
 }
 
 bool AllFinite(const Eigen::Ref<const Eigen::MatrixXd>& values) { return values.allFinite(); }
+
+// Finite and within ±limit in every coordinate.
+bool Plausible(const Eigen::Ref<const Eigen::MatrixXd>& values, double limit) {
+  return values.allFinite() && values.cwiseAbs().maxCoeff() <= limit;
+}
+
+std::string NotPlausible(double limit) { return "not finite or beyond ±" + Number(limit); }
 
 }  // namespace
 
@@ -114,10 +128,15 @@ std::string IntrinsicsProblem(const CameraIntrinsics& intrinsics) {
   if (!(focal_x > 0.0) || !(focal_y > 0.0)) {
     return "focal length must be positive, got " + Number(std::min(focal_x, focal_y));
   }
-  const double limit = kMaxFocalPerImageSide * std::max(width, height);
+  const double limit = kMaxImageSidesAway * std::max(width, height);
   if (std::max(focal_x, focal_y) > limit) {
-    return "focal length " + Number(std::max(focal_x, focal_y)) + " px is over " + Number(kMaxFocalPerImageSide) +
+    return "focal length " + Number(std::max(focal_x, focal_y)) + " px is over " + Number(kMaxImageSidesAway) +
            " image sides";
+  }
+  const Eigen::Vector2d principal_point = intrinsics.PrincipalPoint();
+  if ((principal_point - Eigen::Vector2d(width / 2, height / 2)).cwiseAbs().maxCoeff() > limit) {
+    return "principal point (" + Number(principal_point.x()) + ", " + Number(principal_point.y()) + ") is over " +
+           Number(kMaxImageSidesAway) + " image sides from the image";
   }
   return {};
 }
@@ -129,7 +148,9 @@ void ValidateSfmDataValues(const SfmData& data, const std::string& source) {
   }
   for (const auto& [id, pose] : data.poses) {
     const std::string name = "pose " + std::to_string(id);
-    if (!AllFinite(pose.center)) throw FileError(source, name + ": the centre is not finite");
+    if (!Plausible(pose.center, kMaxSceneCoordinate)) {
+      throw FileError(source, name + ": the centre is " + NotPlausible(kMaxSceneCoordinate));
+    }
     if (!AllFinite(pose.rotation)) throw FileError(source, name + ": the rotation is not finite");
     const double orthogonality =
         (pose.rotation.transpose() * pose.rotation - Eigen::Matrix3d::Identity()).cwiseAbs().maxCoeff();
@@ -139,13 +160,15 @@ void ValidateSfmDataValues(const SfmData& data, const std::string& source) {
   }
   const auto check_landmarks = [&](const std::map<IndexT, Landmark>& landmarks, const char* what) {
     for (const auto& [id, landmark] : landmarks) {
-      if (!AllFinite(landmark.X)) {
-        throw FileError(source, std::string(what) + " " + std::to_string(id) + ": the position is not finite");
+      if (!Plausible(landmark.X, kMaxSceneCoordinate)) {
+        throw FileError(source, std::string(what) + " " + std::to_string(id) + ": the position is " +
+                                    NotPlausible(kMaxSceneCoordinate));
       }
       for (const auto& [view_id, observation] : landmark.observations) {
-        if (!AllFinite(observation.x)) {
+        if (!Plausible(observation.x, kMaxPixelCoordinate)) {
           throw FileError(source, std::string(what) + " " + std::to_string(id) + ": its observation in view " +
-                                      std::to_string(view_id) + " is not a finite pixel");
+                                      std::to_string(view_id) + " is " + NotPlausible(kMaxPixelCoordinate) +
+                                      " pixels");
         }
       }
     }

@@ -48,13 +48,15 @@ struct SfmData {
 void ValidateSfmData(const SfmData& data, const std::string& source, bool intrinsics_loaded = true);
 
 // Checks the numbers: every intrinsic passes IntrinsicsProblem, every pose has a finite centre
-// and a proper rotation, every landmark and observation is finite. A NaN focal or a rotation of
+// within ±1e12 and a proper rotation, every landmark is finite and within ±1e12, every
+// observation finite and within ±1e9 px. A NaN focal or a rotation of
 // NaNs would otherwise run the solvers for minutes and end in a NaN model.
 void ValidateSfmDataValues(const SfmData& data, const std::string& source);
 
 // Why `intrinsics` cannot describe a real camera (empty when it can): an empty or absurd image
 // size, a parameter that is not finite, a focal length that is not positive or is more than a
-// thousand image sides (a field of view under 0.06 degrees: a unit mistake, not a lens).
+// thousand image sides (a field of view under 0.06 degrees: a unit mistake, not a lens), a
+// principal point more than a thousand image sides from the image centre.
 std::string IntrinsicsProblem(const CameraIntrinsics& intrinsics);
 
 }  // namespace sfm_pruning

@@ -6,7 +6,9 @@
 #include <optional>
 #include <system_error>
 
+#include "sfm_pruning/util/atomic_file.hpp"
 #include "sfm_pruning/util/error.hpp"
+#include "sfm_pruning/util/image_file_integrity.hpp"
 
 namespace sfm_pruning {
 namespace {
@@ -75,6 +77,15 @@ bool Outcome(int result, const std::string& error) {
 }  // namespace
 
 cv::Mat ReadImageFile(const fs::path& path, int flags) {
+  // A file cut short is reported here, before a codec prints its own warning or error.
+  std::string bytes;
+  try {
+    bytes = ReadFileToString(path);
+  } catch (const Error&) {
+    return {};  // unreadable: imread would not decode it either
+  }
+  const std::string cut_short = ImageCutShortProblem(bytes);
+  if (!cut_short.empty()) throw ImageCodecError(cut_short);
   cv::Mat image;
   std::string error;
   Outcome(TheCodecs().read(path.c_str(), flags, &image, &error), error);

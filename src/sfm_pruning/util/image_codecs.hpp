@@ -26,7 +26,8 @@ class ImageCodecError : public std::runtime_error {
   explicit ImageCodecError(const std::string& message) : std::runtime_error(message) {}
 };
 
-// cv::imread: an empty image when the file does not decode.
+// cv::imread: an empty image when the file does not decode. A JPEG or PNG cut short throws
+// ImageCodecError saying so (image_file_integrity.hpp), before any codec prints to stderr.
 cv::Mat ReadImageFile(const std::filesystem::path& path, int flags);
 // cv::imwrite: false when OpenCV cannot write the file (unknown extension, unwritable path).
 bool WriteImageFile(const std::filesystem::path& path, const cv::Mat& image, const std::vector<int>& parameters);

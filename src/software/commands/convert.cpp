@@ -21,6 +21,7 @@ struct ConvertArguments {
 
 void RunConvert(const ConvertArguments& args) {
   if (args.output.empty()) throw sfm_pruning::Error("convert: the output path is empty");
+  RefuseOutputOverInput(args.output, {args.input});
   if (sfm_pruning::OutputModelFormat(args.output) == sfm_pruning::ModelFormat::kColmapModel) {
     sfm_pruning::CheckOutputFolder(args.output, sfm_pruning::OutputFolderKind::kColmapModel, args.overwrite);
   }

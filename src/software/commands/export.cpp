@@ -60,9 +60,11 @@ std::optional<sfm_pruning::OutputFolderKind> FolderKind(const std::string& forma
 }
 
 void RunExport(const ExportArguments& args) {
+  RefuseOutputOverInput(args.output, {args.model, args.images});
   if (const auto kind = FolderKind(args.format)) sfm_pruning::CheckOutputFolder(args.output, *kind, args.overwrite);
   sfm_pruning::SfmData data = sfm_pruning::ReadModel(args.model);
   const std::string image_root = args.images.empty() ? data.root_path : args.images;
+  RefuseOutputOverInput(args.output, {image_root});
   if (image_root.empty() && NeedsImages(args.format)) {
     throw Error(args.model + ": --format " + args.format +
                 " needs the images; give --images (the model names no image folder)");

@@ -75,6 +75,10 @@ void RunPrune(const PruneArguments& args) {
   const fs::path report_path =
       args.report.empty() ? fs::path(output).replace_extension(".pruning_report.json") : fs::path(args.report);
   if (report_path == output) throw Error(output.string() + ": --report must differ from --output");
+  std::vector<fs::path> inputs = {args.database, args.sfm_data, args.matches_dir};
+  if (!colmap) inputs.push_back(sfm_pruning::FindOpenMvgMatchesFile(args.matches_dir, args.match_file));
+  RefuseOutputOverInput(output, inputs);
+  RefuseOutputOverInput(report_path, inputs);
 
   StageClock clock;
   const ReconstructionInput input =

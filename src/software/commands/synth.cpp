@@ -152,39 +152,65 @@ void AddSynthCommand(CLI::App& app) {
   cmd->add_option("--output,-o", *output, "Output directory (replaced atomically)")->required();
   AddOverwriteFlag(cmd, overwrite.get(), OverwriteMeans::kReplaceTheFolder);
   cmd->add_option("--seed", o.seed, "Random seed: same options and seed give identical files")->check(SeedValue());
-  cmd->add_option("--num_views", o.num_views, "Number of views (0: scene default)");
-  cmd->add_option("--image_width", o.image_width, "Image width in pixels (0: scene default)");
-  cmd->add_option("--image_height", o.image_height, "Image height in pixels (0: scene default)");
-  cmd->add_option("--focal_px", o.focal_px, "Focal length in pixels (0: 1.2 * max(width, height))");
+  const sfm_pruning::SyntheticLimits& limits = sfm_pruning::kSyntheticLimits;
+  cmd->add_option("--num_views", o.num_views, "Number of views (0: scene default)")
+      ->check(RangeValue(0, limits.max_views));
+  cmd->add_option("--image_width", o.image_width, "Image width in pixels (0: scene default)")
+      ->check(RangeValue(0, limits.max_image_side_px));
+  cmd->add_option("--image_height", o.image_height, "Image height in pixels (0: scene default)")
+      ->check(RangeValue(0, limits.max_image_side_px));
+  cmd->add_option("--focal_px", o.focal_px, "Focal length in pixels (0: 1.2 * max(width, height))")
+      ->check(RangeValue(0, limits.max_focal_image_sides * limits.max_image_side_px));
   // The capture conditions a family scene draws from its seed (synthetic_families.hpp).
   std::vector<CLI::Option*> drawn_by_families = {
-      cmd->add_option("--noise_px", o.noise_px, "Sigma of the Gaussian keypoint noise, pixels")->capture_default_str(),
-      cmd->add_option("--descriptor_noise", o.descriptor_noise, "Expected norm of the descriptor noise (unit histogram)")
+      cmd->add_option("--noise_px", o.noise_px, "Sigma of the Gaussian keypoint noise, pixels")
+          ->check(RangeValue(0, limits.max_noise_px))
           ->capture_default_str(),
-      cmd->add_option("--dropout", o.dropout, "Probability that a visible point is not detected")->capture_default_str(),
-      cmd->add_option("--clutter_ratio", o.clutter_ratio, "Clutter keypoints per detected point")->capture_default_str(),
+      cmd->add_option("--descriptor_noise", o.descriptor_noise, "Expected norm of the descriptor noise (unit histogram)")
+          ->check(RangeValue(0, limits.max_descriptor_noise))
+          ->capture_default_str(),
+      cmd->add_option("--dropout", o.dropout, "Probability that a visible point is not detected")
+          ->check(RangeValue(0, 0.99))
+          ->capture_default_str(),
+      cmd->add_option("--clutter_ratio", o.clutter_ratio, "Clutter keypoints per detected point")
+          ->check(RangeValue(0, limits.max_clutter_ratio))
+          ->capture_default_str(),
   };
   cmd->add_option("--max_incidence_deg", o.max_incidence_deg,
                   "Surfaces seen at a larger angle from their normal are not detected (>= 90: no facing test)")
+      ->check(RangeValue(1e-3, 180))
       ->capture_default_str();
   cmd->add_option("--point_density_scale", o.point_density_scale, "Multiplies every surface's point density")
+      ->check(RangeValue(1e-3, limits.max_point_density_scale))
       ->capture_default_str();
-  cmd->add_option("--ratio_test", o.ratio_test, "Lowe's ratio on descriptor distances")->capture_default_str();
+  cmd->add_option("--ratio_test", o.ratio_test, "Lowe's ratio on descriptor distances")
+      ->check(RangeValue(0.01, 1))
+      ->capture_default_str();
   drawn_by_families.push_back(
       cmd->add_option("--outlier_ratio", o.outlier_ratio,
                       "Fraction of random wrong matches per pair (injected on top of the matcher's own)")
+          ->check(RangeValue(0, 0.99))
           ->capture_default_str());
-  cmd->add_option("--min_matches", o.min_matches, "Pairs with fewer descriptor matches are dropped")->capture_default_str();
-  cmd->add_option("--sequential_window", o.sequential_window, "sequential_large: pairs i, i+1 .. i+window (0: 5)");
-  cmd->add_option("--loop_candidates", o.loop_candidates, "sequential_large: retrieval candidates per view (0: 3)");
-  cmd->add_option("--loop_min_gap", o.loop_min_gap, "sequential_large: frames between loop candidates (0: 50)");
-  cmd->add_option("--laps", o.laps, "sequential_large: laps of the loop (0: 2)");
-  cmd->add_option("--twin_fraction", o.twin_fraction, "sequential_large: fraction of repeated facades (default 0.25)");
+  cmd->add_option("--min_matches", o.min_matches, "Pairs with fewer descriptor matches are dropped")
+      ->check(NonNegativeValue())
+      ->capture_default_str();
+  cmd->add_option("--sequential_window", o.sequential_window, "sequential_large: pairs i, i+1 .. i+window (0: 5)")
+      ->check(NonNegativeValue());
+  cmd->add_option("--loop_candidates", o.loop_candidates, "sequential_large: retrieval candidates per view (0: 3)")
+      ->check(NonNegativeValue());
+  cmd->add_option("--loop_min_gap", o.loop_min_gap, "sequential_large: frames between loop candidates (0: 50)")
+      ->check(NonNegativeValue());
+  cmd->add_option("--laps", o.laps, "sequential_large: laps of the loop (0: 2)")->check(NonNegativeValue());
+  cmd->add_option("--twin_fraction", o.twin_fraction, "sequential_large: fraction of repeated facades (default 0.25)")
+      ->check(RangeValue(0, 0.9));
   cmd->add_option("--loop_straight_per_radius", o.loop_straight_per_radius,
-                  "sequential_large: length of each straight over the end arcs' radius (0: 3)");
+                  "sequential_large: length of each straight over the end arcs' radius (0: 3)")
+      ->check(RangeValue(0, 100));
   cmd->add_option("--street_module_width", o.street_module_width_m, "street: width of the repeated facade, metres")
+      ->check(RangeValue(2, limits.max_street_module_width_m))
       ->capture_default_str();
   cmd->add_option("--num_threads", o.num_threads, "Threads for matching (the output does not depend on it)")
+      ->check(PositiveValue())
       ->capture_default_str();
   cmd->callback([options, output, overwrite, drawn_by_families]() {
     sfm_pruning::CheckOutputFolder(*output, sfm_pruning::OutputFolderKind::kSyntheticScene, *overwrite);
