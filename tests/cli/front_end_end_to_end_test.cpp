@@ -9,6 +9,7 @@
 
 #include "features/rendered_scene.hpp"
 #include "run_prunesfm.hpp"
+#include "sfm_pruning/io/colmap_model.hpp"
 #include "sfm_pruning/io/openmvg_matches.hpp"
 #include "support/test_data.hpp"
 
@@ -53,6 +54,16 @@ TEST(CliFrontEnd, RunFromImagesReconstructsSkipsCorruptImagesAndResumes) {
   const nlohmann::json priors = ReadJson(out / "matches" / "camera_priors.json");
   EXPECT_EQ(priors.at("cameras")[0].at("focal_source"), "user_focal");
   EXPECT_EQ(priors.at("skipped_images")[0].at("image"), "zz_corrupt.jpg");
+  // The points are coloured from the images and carry their reprojection errors.
+  const SfmData model = ReadColmapModel(out / "sparse" / "0");
+  ASSERT_GT(model.structure.size(), 100u);
+  size_t grey = 0;
+  for (const auto& [id, landmark] : model.structure) {
+    if (landmark.color == std::array<uint8_t, 3>{128, 128, 128}) ++grey;
+    EXPECT_GE(landmark.error, 0.0) << id;
+    EXPECT_LT(landmark.error, 4.0) << id;
+  }
+  EXPECT_LT(grey, model.structure.size() / 10);
   // Every pair of neighbours is verified.
   const PairwiseMatches verified = ReadOpenMvgMatches(out / "matches" / "matches.e.bin");
   for (IndexT k = 0; k + 1 < 5; ++k) EXPECT_EQ(verified.count({k, k + 1}), 1u) << k;

@@ -7,6 +7,7 @@
 
 #include "bundle_test_scene.hpp"
 #include "sfm_pruning/global/bundle_adjustment.hpp"
+#include "sfm_pruning/global/bundle_observations.hpp"
 
 namespace sfm_pruning {
 namespace {
@@ -92,6 +93,26 @@ TEST_F(StructureFilteringCases, RemovesObservationsBehindTheCamera) {
   ASSERT_EQ(data_.structure.count(1000), 1u);
   EXPECT_EQ(data_.structure.at(1000).observations.size(), 3u);
   EXPECT_EQ(data_.structure.at(1000).observations.count(0), 0u);
+}
+
+// COLMAP's ERROR of a point: the mean pixel error of its posed observations.
+TEST_F(StructureFilteringCases, LandmarkErrorIsTheMeanReprojectionError) {
+  Landmark landmark;
+  landmark.X = Eigen::Vector3d(0.1, 0.2, 0.3);
+  landmark.observations[0] = Exact(0, landmark.X);
+  landmark.observations[1] = Exact(1, landmark.X);
+  landmark.observations[1].x += Eigen::Vector2d(3.0, 4.0);  // 5 px off
+  data_.structure[1000] = landmark;
+  Landmark behind = landmark;
+  behind.X = data_.poses.at(0).center - 0.5 * data_.poses.at(0).ViewingDirection();
+  data_.structure[1001] = behind;
+  Landmark unobserved;
+  data_.structure[1002] = unobserved;
+  SetLandmarkReprojectionErrors(&data_);
+  EXPECT_NEAR(data_.structure.at(1000).error, 2.5, 1e-9);
+  EXPECT_EQ(data_.structure.at(1001).error, -1.0);  // infinite: unknown, not a number COLMAP prints
+  EXPECT_EQ(data_.structure.at(1002).error, -1.0);
+  EXPECT_NEAR(data_.structure.at(0).error, 0.0, 1e-9);
 }
 
 TEST_F(StructureFilteringCases, DropsLandmarksUnderTooSmallAnAngle) {

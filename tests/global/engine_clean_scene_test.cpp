@@ -16,6 +16,11 @@ TEST(EngineCleanScene, RegistersEveryViewAccurately) {
   EXPECT_TRUE(run.engine.dropped_views.empty());
   EXPECT_GT(run.engine.num_landmarks, 500u);
   EXPECT_LT(run.engine.final_rms_px, 1.5);
+  // Every point carries its mean reprojection error (COLMAP's ERROR), below the RMS bound too.
+  for (const auto& [id, landmark] : run.model.structure) {
+    EXPECT_GE(landmark.error, 0.0) << id;
+    EXPECT_LT(landmark.error, 4.0) << id;
+  }
   const EvaluationReport report = EvaluateModel(run.model, scene.ground_truth);
   EXPECT_EQ(report.num_registered_images, scene.ground_truth.views.size());
   EXPECT_GE(AucAt(report, 3.0), 97.0);

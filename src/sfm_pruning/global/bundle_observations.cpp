@@ -29,4 +29,16 @@ double ReprojectionErrorPx(const CameraIntrinsics& intrinsics, const Pose& pose,
   return (intrinsics.Project(X_cam) - pixel).norm();
 }
 
+void SetLandmarkReprojectionErrors(SfmData* data) {
+  for (auto& [id, landmark] : data->structure) {
+    double sum = 0.0;
+    size_t count = 0;
+    for (const PosedObservation& observation : PosedObservationsOf(*data, landmark)) {
+      sum += ReprojectionErrorPx(observation, landmark.X);
+      ++count;
+    }
+    landmark.error = count > 0 && std::isfinite(sum) ? sum / static_cast<double>(count) : -1.0;
+  }
+}
+
 }  // namespace sfm_pruning

@@ -35,4 +35,9 @@ inline double ReprojectionErrorPx(const PosedObservation& obs, const Eigen::Vect
   return ReprojectionErrorPx(*obs.intrinsics, *obs.pose, X, obs.observation->x);
 }
 
+// Sets each landmark's `error` (COLMAP's ERROR of a point) to the mean reprojection error in
+// pixels of its posed observations at its current position; -1 when it has none, or when one is
+// behind its camera (an error COLMAP's readers would print as infinity).
+void SetLandmarkReprojectionErrors(SfmData* data);
+
 }  // namespace sfm_pruning

@@ -6,6 +6,7 @@
 #include <set>
 #include <utility>
 
+#include "sfm_pruning/global/bundle_observations.hpp"
 #include "sfm_pruning/view_graph/components.hpp"
 
 namespace sfm_pruning {
@@ -160,6 +161,7 @@ bool AdjustAndFilter(const GlobalEngineOptions& options, SfmData* out, GlobalEng
   for (const IndexT view_id : UnregisterWeakViews(options.min_observations_per_view, out)) {
     dropped->emplace(view_id, "too few observations after filtering");
   }
+  SetLandmarkReprojectionErrors(out);  // each point's ERROR in the COLMAP model
   return true;
 }
 

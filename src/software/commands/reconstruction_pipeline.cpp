@@ -11,6 +11,7 @@
 #include <glog/logging.h>
 #include <nlohmann/json.hpp>
 
+#include "sfm_pruning/export/point_colors.hpp"
 #include "sfm_pruning/global/focal_calibration.hpp"
 #include "sfm_pruning/global/global_engine.hpp"
 #include "sfm_pruning/io/colmap_model.hpp"
@@ -224,6 +225,27 @@ void BeginOutputs(const fs::path& output) {
   if (ec) throw sfm_pruning::FileError((output / "timings.json").string(), "cannot remove: " + ec.message());
 }
 
+// Colours the points from the images when every posed view's image is found under the scene's
+// root path (`run IMAGES OUT`, `run --database DB --image_path DIR`, an OpenMVG project). A scene
+// without a root path (synthetic, `reconstruct --database`) keeps grey points silently; one whose
+// images are missing or do not decode keeps them with a line saying why.
+void ColorPointsFromImages(int num_threads, sfm_pruning::SfmData* model) {
+  if (model->root_path.empty()) return;
+  for (const sfm_pruning::IndexT view_id : model->PosedViewIds()) {
+    const fs::path image = fs::path(model->root_path) / model->views.at(view_id).RelativeImagePath();
+    std::error_code ec;
+    if (!fs::is_regular_file(image, ec)) {
+      Info("points left grey: no image " + image.string());
+      return;
+    }
+  }
+  try {
+    sfm_pruning::ColorLandmarksFromImages(model, model->root_path, num_threads, TerminalProgressBar());
+  } catch (const sfm_pruning::Error& e) {
+    Info(std::string("points left grey: ") + e.what());
+  }
+}
+
 void WriteModelOutputs(const sfm_pruning::SfmData& model, const sfm_pruning::FeaturesPerView& features,
                        const fs::path& output) {
   fs::create_directories(output / "sparse");
@@ -415,7 +437,7 @@ void RunReconstruction(const EngineSettings& settings, const ReconstructionInput
   }
   const sfm_pruning::ViewGraphBuildReport& build = solution.build;
   const sfm_pruning::GlobalEngineReport& report = solution.report;
-  const sfm_pruning::SfmData& model = solution.model;
+  sfm_pruning::SfmData& model = solution.model;
   const std::optional<sfm_pruning::ViewGraphPruningReport>& pruning = solution.pruning;
   const double verify_seconds = solution.verify_seconds;
   if (!report.success) throw Error(input.source + ": reconstruction failed: " + report.message);
@@ -458,6 +480,9 @@ void RunReconstruction(const EngineSettings& settings, const ReconstructionInput
     Info("dropped view " + dropped.at("view_id").dump() + " (" + dropped.at("image").get<std::string>() +
          "): " + dropped.at("reason").get<std::string>());
   }
+  const auto coloring_start = std::chrono::steady_clock::now();
+  ColorPointsFromImages(settings.num_threads, &model);
+  stage_list.push_back({{"stage", "point colours"}, {"seconds", SecondsSince(coloring_start)}});
   WriteModelOutputs(model, input.features, output);
   sfm_pruning::WriteRunViewGraph(solution.view_graph, output / "view_graph.json");
   WriteJsonAtomically(timings, output / "timings.json");  // last: the run is complete
