@@ -97,6 +97,12 @@ TEST(ColmapUndistortedWorkspace, HoldsPinholeCamerasConsistentImagesAndStereoCon
                            "stereo/patch-match.cfg", "stereo/fusion.cfg", "run-colmap-geometric.sh"}) {
     EXPECT_TRUE(fs::is_regular_file(workspace / file)) << file;
   }
+  // Splatting and NeRF tools open images/ and sparse/0/*.bin: the same model, also there.
+  for (const char* name : {"cameras.bin", "images.bin", "points3D.bin"}) {
+    EXPECT_EQ(ReadFileToString(workspace / "sparse" / "0" / name), ReadFileToString(workspace / "sparse" / name))
+        << name;
+  }
+  EXPECT_EQ(ReadColmapModel(workspace / "sparse" / "0").structure.size(), data.structure.size());
   for (const char* folder : {"stereo/depth_maps", "stereo/normal_maps", "stereo/consistency_graphs"}) {
     EXPECT_TRUE(fs::is_directory(workspace / folder)) << folder;
   }

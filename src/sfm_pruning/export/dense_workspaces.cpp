@@ -49,6 +49,19 @@ void WriteDenseScript(const fs::path& path) {
                   fs::perm_options::add, ignored);
 }
 
+// Gaussian-splatting and NeRF tools open SOURCE/sparse/0/*.bin, COLMAP's dense tools
+// WORKSPACE/sparse/*.bin: the model is in both places, the second as hard links to the first
+// (no extra space; a copy where the file system has no hard links).
+void LinkModelIntoSubfolderZero(const fs::path& sparse) {
+  const fs::path zero = sparse / "0";
+  fs::create_directories(zero);
+  for (const char* name : {"cameras.bin", "images.bin", "points3D.bin"}) {
+    std::error_code error;
+    fs::create_hard_link(sparse / name, zero / name, error);
+    if (error) fs::copy_file(sparse / name, zero / name, fs::copy_options::overwrite_existing);
+  }
+}
+
 }  // namespace
 
 void WriteColmapUndistortedWorkspace(const SfmData& data, const fs::path& image_root,
@@ -58,6 +71,7 @@ void WriteColmapUndistortedWorkspace(const SfmData& data, const fs::path& image_
   WriteDirectoryAtomically(output_dir, OutputFolderKind::kColmapDenseWorkspace, [&](const fs::path& dir) {
     WriteUndistortedImages(data, undistorted, image_root, dir / "images", options.images, progress);
     WriteColmapModel(undistorted.data, dir / "sparse", ColmapModelFormat::kBinary);
+    LinkModelIntoSubfolderZero(dir / "sparse");
     WriteStereoFolder(undistorted.data, dir / "stereo");
     WriteDenseScript(dir / "run-colmap-geometric.sh");
   });
