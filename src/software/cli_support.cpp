@@ -6,13 +6,24 @@
 #include <cstdio>
 #include <mutex>
 
+#include <glog/logging.h>
+
 #include "sfm_pruning/util/error.hpp"
 #include "sfm_pruning/util/output_folder.hpp"
+#include "sfm_pruning/util/progress_lines.hpp"
 
 namespace prunesfm {
+namespace {
 
-sfm_pruning::ProgressCallback TerminalProgressBar() {
-  if (!::isatty(STDERR_FILENO)) return {};
+bool quiet = false;  // set once while the command line is parsed, read after
+
+}  // namespace
+
+sfm_pruning::ProgressCallback ProgressOnStderr() {
+  if (quiet) return {};
+  if (!::isatty(STDERR_FILENO)) {
+    return sfm_pruning::ProgressLines([](const std::string& line) { Info(line); });
+  }
   auto mutex = std::make_shared<std::mutex>();
   return [mutex](const std::string& stage, size_t done, size_t total) {
     std::lock_guard<std::mutex> lock(*mutex);
@@ -66,6 +77,19 @@ void RefuseOutputOverInput(const std::filesystem::path& output, const std::vecto
   }
 }
 
-void Info(const std::string& message) { std::fprintf(stderr, "prunesfm: %s\n", message.c_str()); }
+void SilenceSolverLogging() {
+  google::InitGoogleLogging("prunesfm");
+  FLAGS_logtostderr = true;
+  FLAGS_minloglevel = google::GLOG_FATAL;
+}
+
+void Info(const std::string& message) {
+  if (!quiet) std::fprintf(stderr, "prunesfm: %s\n", message.c_str());
+}
+
+void AddQuietFlag(CLI::App* app) {
+  app->add_flag("--quiet,-q", quiet, "Print only errors: no progress, no informational lines");
+  app->fallthrough();  // `prunesfm run IMAGES OUT --quiet` as well as `prunesfm --quiet run ...`
+}
 
 }  // namespace prunesfm

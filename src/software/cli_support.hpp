@@ -15,9 +15,11 @@ namespace prunesfm {
 // The engines the reconstruction commands accept (listed in --help).
 inline constexpr const char* kEngineNames[] = {"GLOBAL", "GLOBAL_PRUNED"};
 
-// A progress callback that draws "\r[#####     ]  42% stage" on stderr when stderr is a terminal
-// and prints nothing otherwise (logs and CI stay clean).
-sfm_pruning::ProgressCallback TerminalProgressBar();
+// A progress callback on stderr: on a terminal a bar redrawn in place ("\r[#####     ]  42%
+// stage"); in a log (stderr redirected) plain lines "prunesfm: stage: 42% (21/50), 12 s elapsed,
+// about 16 s left" at most every 10 s of a long stage (util/progress_lines.hpp), nothing for
+// stages shorter than that.
+sfm_pruning::ProgressCallback ProgressOnStderr();
 
 // What `--overwrite` does to a folder that is neither empty nor an earlier output of the command.
 enum class OverwriteMeans {
@@ -38,7 +40,16 @@ void PrepareRunFolder(const std::filesystem::path& dir, bool overwrite);
 // are fine. Call before any work.
 void RefuseOutputOverInput(const std::filesystem::path& output, const std::vector<std::filesystem::path>& inputs);
 
-// Prints an informational line on stderr ("prunesfm: ...").
+// Ceres logs solver warnings (e.g. a rejected Levenberg-Marquardt step) through glog on stderr,
+// and glog warns when used before it is initialised; the commands report through their results
+// instead, so every command keeps stderr to its own lines. Called once, first thing in main.
+void SilenceSolverLogging();
+
+// Prints an informational line on stderr ("prunesfm: ..."), unless --quiet.
 void Info(const std::string& message);
+
+// `--quiet,-q` on `app`, given before or after the subcommand: no informational lines and no
+// progress, only errors (which always print).
+void AddQuietFlag(CLI::App* app);
 
 }  // namespace prunesfm

@@ -13,6 +13,7 @@
 #include "software/commands.hpp"
 
 int main(int argc, char** argv) {
+  prunesfm::SilenceSolverLogging();
   std::string engines;
   for (const char* engine : prunesfm::kEngineNames) engines += std::string(engines.empty() ? "" : ", ") + engine;
   CLI::App app{
@@ -30,6 +31,7 @@ int main(int argc, char** argv) {
     return "prunesfm: error: " + std::string(error.what()) + " (see '" + help + "')\n";
   });
   app.set_version_flag("--version", "prunesfm 0.1.0");
+  prunesfm::AddQuietFlag(&app);
 
   prunesfm::AddInitCommand(app);
   prunesfm::AddFeaturesCommand(app);

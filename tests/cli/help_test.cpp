@@ -5,6 +5,7 @@
 #include <gtest/gtest.h>
 
 #include "run_prunesfm.hpp"
+#include "support/test_data.hpp"
 
 namespace sfm_pruning::testing {
 namespace {
@@ -88,6 +89,24 @@ TEST(Cli, OutOfRangeNumbersSayWhatIsExpectedInOneLine) {
     EXPECT_EQ(result.err.rfind("prunesfm: error: ", 0), 0u) << result.err;
     EXPECT_NE(result.err.find("(see 'prunesfm " + arguments[0] + " --help')"), std::string::npos) << result.err;
   }
+}
+
+// --quiet, before or after the subcommand: a successful command prints nothing, an error still
+// prints its line.
+TEST(Cli, QuietPrintsOnlyErrors) {
+  const std::string out = ScratchDir("cli_quiet").string();
+  for (const std::vector<std::string>& command :
+       {std::vector<std::string>{"synth", "--scene", "clean", "--num_views", "6", "-o", out + "/a", "--quiet"},
+        std::vector<std::string>{"--quiet", "synth", "--scene", "clean", "--num_views", "6", "-o", out + "/b"}}) {
+    const CommandResult result = RunPrunesfm(command);
+    EXPECT_EQ(result.exit_code, 0) << result.err;
+    EXPECT_EQ(result.err, "");
+  }
+  const CommandResult verbose = RunPrunesfm({"synth", "--scene", "clean", "--num_views", "6", "-o", out + "/c"});
+  EXPECT_NE(verbose.err.find("prunesfm: wrote clean"), std::string::npos) << verbose.err;
+  const CommandResult failed = RunPrunesfm({"convert", "-i", "/nonexistent/model.json", "-o", out + "/x.ply", "-q"});
+  EXPECT_EQ(failed.exit_code, 1);
+  EXPECT_EQ(CountLines(failed.err), 1) << failed.err;
 }
 
 TEST(Cli, MissingInputFileGivesOneLineNamingTheFile) {

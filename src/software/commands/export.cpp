@@ -73,7 +73,7 @@ void RunExport(const ExportArguments& args) {
     throw Error(image_root + ": image folder does not exist");
   if (args.format == "ply") RequireExtension(args, {".ply"});
   if (args.format == "json") RequireExtension(args, {".json", ".bin"});
-  const sfm_pruning::ProgressCallback progress = TerminalProgressBar();
+  const sfm_pruning::ProgressCallback progress = ProgressOnStderr();
   if (!image_root.empty()) {
     sfm_pruning::ColorLandmarksFromImages(&data, image_root, args.num_threads, progress);
     data.root_path = image_root;

@@ -168,7 +168,7 @@ int FrontEndThreads(int requested) {
 void RunInitStage(const InitSettings& settings, const fs::path& image_dir, const fs::path& sfm_path,
                   int num_threads) {
   const sfm_pruning::ImageListing listing =
-      sfm_pruning::ListImages(image_dir, ListingOptions(settings, num_threads), TerminalProgressBar());
+      sfm_pruning::ListImages(image_dir, ListingOptions(settings, num_threads), ProgressOnStderr());
   sfm_pruning::CameraPriors priors;
   for (const sfm_pruning::SkippedImage& skipped : listing.skipped) {
     Info("skipped " + (image_dir / skipped.filename).string() + ": " + skipped.reason);
@@ -201,14 +201,14 @@ sfm_pruning::FeaturesPerView RunFeatureStage(const FeatureSettings& settings, co
   options.num_threads = num_threads;
   sfm_pruning::FeatureExtractionReport report;
   sfm_pruning::FeaturesPerView features =
-      sfm_pruning::ExtractFeatures(scene, options, &report, TerminalProgressBar());
+      sfm_pruning::ExtractFeatures(scene, options, &report, ProgressOnStderr());
   for (const auto& [view_id, problem] : report.failed_views) {
     Info("no features for view " + std::to_string(view_id) + " (" + scene.views.at(view_id).RelativeImagePath() +
          "): " + problem);
   }
   if (features.empty()) throw Error(scene.root_path + ": no image of the scene decodes");
   fs::create_directories(matches_dir);
-  sfm_pruning::WriteOpenMvgFeatures(scene, features, matches_dir, TerminalProgressBar());
+  sfm_pruning::WriteOpenMvgFeatures(scene, features, matches_dir, ProgressOnStderr());
   Info("extracted " + std::to_string(report.total_features) + " SIFT features in " + std::to_string(features.size()) +
        " images (" + Fixed(static_cast<double>(report.total_features) / features.size(), 0) + " per image) into " +
        matches_dir.string());
@@ -232,7 +232,7 @@ MatchStageSummary RunMatchStage(const MatchSettings& settings, const sfm_pruning
   options.seed = settings.seed;
   options.num_threads = num_threads;
   const sfm_pruning::PairwiseMatches putative =
-      sfm_pruning::MatchDescriptors(features, pairs, options, TerminalProgressBar());
+      sfm_pruning::MatchDescriptors(features, pairs, options, ProgressOnStderr());
   summary.num_putative_pairs = putative.size();
   for (const auto& [pair, matches] : putative) summary.num_putative_matches += matches.size();
   fs::create_directories(matches_dir);
@@ -248,7 +248,7 @@ MatchStageSummary RunMatchStage(const MatchSettings& settings, const sfm_pruning
   verify.keep_largest_component = false;
   sfm_pruning::ViewGraphBuildReport report;
   const sfm_pruning::ViewGraph graph =
-      sfm_pruning::BuildViewGraphFromMatches(verify, scene, features, putative, &report, TerminalProgressBar());
+      sfm_pruning::BuildViewGraphFromMatches(verify, scene, features, putative, &report, ProgressOnStderr());
   sfm_pruning::PairwiseMatches verified;
   for (const auto& [pair, edge] : graph.Edges()) {
     if (!edge.is_valid) continue;

@@ -24,7 +24,7 @@ void RunMatch(const MatchArguments& args) {
   const sfm_pruning::SfmData scene =
       sfm_pruning::ReadSfmData(args.sfm_data, SfmDataParts::kViews | SfmDataParts::kIntrinsics);
   const sfm_pruning::FeaturesPerView features =
-      sfm_pruning::ReadOpenMvgFeatures(scene, args.matches_dir, true, TerminalProgressBar());
+      sfm_pruning::ReadOpenMvgFeatures(scene, args.matches_dir, true, ProgressOnStderr());
   RunMatchStage(args.settings, scene, features, args.matches_dir, FrontEndThreads(args.num_threads));
 }
 

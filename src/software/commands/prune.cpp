@@ -83,7 +83,7 @@ void RunPrune(const PruneArguments& args) {
   StageClock clock;
   const ReconstructionInput input =
       colmap ? ReadColmapInput(args.database)
-             : ReadOpenMvgInput(args.sfm_data, args.matches_dir, args.match_file, TerminalProgressBar());
+             : ReadOpenMvgInput(args.sfm_data, args.matches_dir, args.match_file, ProgressOnStderr());
   if (colmap && input.verified.empty()) {
     throw Error(args.database +
                 ": no two-view geometries to prune (verify the matches first, e.g. colmap exhaustive_matcher)");
@@ -110,7 +110,7 @@ void RunPrune(const PruneArguments& args) {
 
   const sfm_pruning::PrunedGlobalEngineOptions options = PrunedEngineOptions(args.settings);
   sfm_pruning::ViewGraphPruningReport pruning;
-  PruneViewGraph(options.pruning, &graph, scene, input.features, &pruning, TerminalProgressBar());
+  PruneViewGraph(options.pruning, &graph, scene, input.features, &pruning, ProgressOnStderr());
   const double prune_seconds = clock.Lap();
   Info("pruning: " + PruningSummary(pruning));
 

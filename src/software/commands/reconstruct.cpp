@@ -33,7 +33,7 @@ void RunReconstruct(const ReconstructArguments& args) {
   const auto start = std::chrono::steady_clock::now();
   const ReconstructionInput input = args.database.empty()
                                         ? ReadOpenMvgInput(args.sfm_data, args.matches_dir, args.match_file,
-                                                           TerminalProgressBar())
+                                                           ProgressOnStderr())
                                         : ReadColmapInput(args.database);
   const double read_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   RunReconstruction(args.engine, input, args.output, read_seconds);

@@ -8,7 +8,6 @@
 #include <filesystem>
 #include <optional>
 
-#include <glog/logging.h>
 #include <nlohmann/json.hpp>
 
 #include "sfm_pruning/export/point_colors.hpp"
@@ -58,9 +57,9 @@ sfm_pruning::ViewGraph BuildVerifiedViewGraph(const EngineSettings& settings, co
   try {
     graph = input.verified.empty()
                 ? BuildViewGraphFromMatches(options, views_and_intrinsics, input.features, input.putative, report,
-                                            TerminalProgressBar())
+                                            ProgressOnStderr())
                 : BuildViewGraphFromVerifiedPairs(options, views_and_intrinsics, input.features, input.verified,
-                                                  report, TerminalProgressBar());
+                                                  report, ProgressOnStderr());
   } catch (const Error& e) {
     throw Error(input.source + ": " + e.what());
   }
@@ -198,18 +197,6 @@ nlohmann::json TimingsJson(const EngineSettings& settings, const sfm_pruning::Vi
   return json;
 }
 
-// Ceres logs solver warnings (e.g. a rejected Levenberg-Marquardt step) through glog on stderr;
-// the engine reports through its results instead, so the command keeps stderr to its own lines.
-void SilenceSolverLogging() {
-  static const bool initialized = []() {
-    google::InitGoogleLogging("prunesfm");
-    FLAGS_logtostderr = true;
-    FLAGS_minloglevel = google::GLOG_FATAL;
-    return true;
-  }();
-  (void)initialized;
-}
-
 // The files of a run folder. timings.json is the run's completion record: it is removed before
 // the first output is written and written after the last, so a folder holding a timings.json
 // holds the outputs of one finished run, and a reader can tell an interrupted one.
@@ -240,7 +227,7 @@ void ColorPointsFromImages(int num_threads, sfm_pruning::SfmData* model) {
     }
   }
   try {
-    sfm_pruning::ColorLandmarksFromImages(model, model->root_path, num_threads, TerminalProgressBar());
+    sfm_pruning::ColorLandmarksFromImages(model, model->root_path, num_threads, ProgressOnStderr());
   } catch (const sfm_pruning::Error& e) {
     Info(std::string("points left grey: ") + e.what());
   }
@@ -295,7 +282,8 @@ void AddSolverOptions(CLI::App* cmd, EngineSettings* settings) {
       ->check(SeedValue())
       ->capture_default_str();
   cmd->add_option("--num_threads", settings->num_threads,
-                  "Worker threads (1 gives bitwise reproducible results)")
+                  "Worker threads. 1 (the default) gives bitwise reproducible models; with more, Ceres's "
+                  "threaded sums make the last digits differ from run to run")
       ->check(PositiveValue())
       ->capture_default_str();
   cmd->add_option("--positioning", settings->positioning,
@@ -352,7 +340,7 @@ Solution Solve(const EngineSettings& settings, const ReconstructionInput& input,
     sfm_pruning::PrunedGlobalEngineOptions options = PrunedEngineOptions(settings);
     options.engine.bundle = bundle;  // the final solve; the per-community solves hold the intrinsics
     sfm_pruning::PrunedGlobalEngineReport pruned;
-    RunPrunedGlobalEngine(options, graph, scene, input.features, &solution.model, &pruned, TerminalProgressBar());
+    RunPrunedGlobalEngine(options, graph, scene, input.features, &solution.model, &pruned, ProgressOnStderr());
     solution.report = std::move(pruned.engine);
     solution.pruning = std::move(pruned.pruning);
   } else {
@@ -365,7 +353,7 @@ Solution Solve(const EngineSettings& settings, const ReconstructionInput& input,
     options.positioning_start_screening_iterations = settings.positioning_start_screening;
     options.bundle = bundle;
     if (schedule == Schedule::kFocalSearch) options = sfm_pruning::WithFocalSearchSchedule(options);
-    RunGlobalEngine(options, graph, scene, input.features, &solution.model, &solution.report, TerminalProgressBar());
+    RunGlobalEngine(options, graph, scene, input.features, &solution.model, &solution.report, ProgressOnStderr());
   }
   solution.view_graph = sfm_pruning::MakeRunViewGraph(settings.engine, graph, scene,
                                                       solution.pruning ? &*solution.pruning : nullptr);
@@ -401,7 +389,6 @@ double SearchUncalibratedFocals(const EngineSettings& settings, const Reconstruc
 
 void RunReconstruction(const EngineSettings& settings, const ReconstructionInput& input, const fs::path& output,
                        double read_seconds, const std::vector<FrontEndStageTiming>& front_end) {
-  SilenceSolverLogging();
   const std::set<sfm_pruning::IndexT> refined = RefinedIntrinsics(settings.intrinsics, input);
   sfm_pruning::SfmData scene = input.scene;
   std::optional<sfm_pruning::FocalCalibrationReport> calibration;

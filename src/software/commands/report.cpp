@@ -48,7 +48,7 @@ void RunReport(const ReportArguments& args) {
     if (!fs::is_directory(args.images)) throw sfm_pruning::FileError(args.images, "no such image folder");
     input.images_dir = fs::path(args.images);
     for (sfm_pruning::RunFolder& run : input.runs) {
-      sfm_pruning::ColorLandmarksFromImages(&run.model, *input.images_dir, 1, TerminalProgressBar());
+      sfm_pruning::ColorLandmarksFromImages(&run.model, *input.images_dir, 1, ProgressOnStderr());
     }
   }
   std::string html;

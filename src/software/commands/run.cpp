@@ -102,14 +102,14 @@ void RunFromImages(const RunArguments& args, const fs::path& images, const fs::p
   const std::string match_key = HashKey(features_key + SettingsKey(match) + FileFingerprint(match.pair_list));
   timings.push_back(RunOrReuse(&manifest, "match", match_key, {matches_dir / "matches.e.bin"}, args.force, [&]() {
     const sfm_pruning::SfmData scene = read_scene();
-    if (!features) features = sfm_pruning::ReadOpenMvgFeatures(scene, matches_dir, true, TerminalProgressBar());
+    if (!features) features = sfm_pruning::ReadOpenMvgFeatures(scene, matches_dir, true, ProgressOnStderr());
     RunMatchStage(match, scene, *features, matches_dir, threads);
   }));
   features.reset();  // descriptors are not needed any more
 
   const auto start = std::chrono::steady_clock::now();
   ReconstructionInput input =
-      ReadOpenMvgInput(sfm_path, matches_dir, matches_dir / "matches.e.bin", TerminalProgressBar());
+      ReadOpenMvgInput(sfm_path, matches_dir, matches_dir / "matches.e.bin", ProgressOnStderr());
   // Problems of the matches are the images' (the run wrote the match file itself).
   input.source = images.string();
   RunReconstruction(args.engine, input, out, SecondsSince(start), timings);
@@ -123,7 +123,7 @@ void RunSyntheticFallback(const RunArguments& args, const fs::path& out) {
   options.scene = "clean";
   options.seed = args.engine.seed;
   const auto start = std::chrono::steady_clock::now();
-  const sfm_pruning::SyntheticScene scene = sfm_pruning::GenerateSyntheticScene(options, TerminalProgressBar());
+  const sfm_pruning::SyntheticScene scene = sfm_pruning::GenerateSyntheticScene(options, ProgressOnStderr());
   ReconstructionInput input;
   input.source = "synthetic scene 'clean'";
   input.scene.views = scene.ground_truth.views;

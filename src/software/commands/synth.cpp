@@ -222,7 +222,7 @@ void AddSynthCommand(CLI::App& app) {
         }
       }
     }
-    const SyntheticScene scene = sfm_pruning::GenerateSyntheticScene(*options, TerminalProgressBar());
+    const SyntheticScene scene = sfm_pruning::GenerateSyntheticScene(*options, ProgressOnStderr());
     sfm_pruning::WriteDirectoryAtomically(*output, sfm_pruning::OutputFolderKind::kSyntheticScene, [&](const fs::path& dir) { WriteScene(scene, dir); });
     size_t num_matches = 0;
     for (const auto& [pair, matches] : scene.putative_matches) num_matches += matches.size();
