@@ -109,6 +109,24 @@ TEST(Cli, QuietPrintsOnlyErrors) {
   EXPECT_EQ(CountLines(failed.err), 1) << failed.err;
 }
 
+// COLMAP's and GLOMAP's spellings (--database_path, --image_path, --output_path) and ours
+// (--database, --images, --output, -o) are both accepted wherever the option exists.
+TEST(Cli, BothSpellingsOfPathsAreAccepted) {
+  const std::vector<std::vector<std::string>> commands = {
+      {"reconstruct", "--database_path", "/nonexistent/db.db", "--output_path", "/tmp/prunesfm-never-written"},
+      {"prune", "--database_path", "/nonexistent/db.db", "--output_path", "/tmp/prunesfm-never-written.db"},
+      {"run", "--database", "/nonexistent/db.db", "--image_path", "/nonexistent", "--output",
+       "/tmp/prunesfm-never-written"},
+      {"report", "--run", "/nonexistent/run", "--image_path", "/nonexistent", "-o", "/tmp/prunesfm-never.html"},
+      {"epipolar", "--model", "/nonexistent/db.json", "--image", "a.jpg", "--image_path", "/nonexistent",
+       "--output_path", "/tmp/prunesfm-never.png"}};
+  for (const std::vector<std::string>& command : commands) {
+    const CommandResult result = RunPrunesfm(command);
+    EXPECT_EQ(result.exit_code, 1) << command[0] << ": " << result.err;  // parsed; the file is missing
+    EXPECT_NE(result.err.find("/nonexistent"), std::string::npos) << result.err;
+  }
+}
+
 TEST(Cli, MissingInputFileGivesOneLineNamingTheFile) {
   const CommandResult result = RunPrunesfm({"convert", "--input", "/nonexistent/sfm_data.json", "--output", "/tmp/x.ply"});
   EXPECT_EQ(result.exit_code, 1);

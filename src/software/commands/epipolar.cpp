@@ -78,7 +78,8 @@ void AddEpipolarCommand(CLI::App& app) {
       ->required();
   cmd->add_option("--image", args->image, "Reference image, as named in the model")->required();
   cmd->add_option("--point", args->point, "Pixel x,y in the reference image (default: a well-tracked feature)");
-  cmd->add_option("--images", args->images, "Image folder (default: each view drawn as its observed features)");
+  cmd->add_option("--images,--image_path", args->images,
+                  "Image folder (default: each view drawn as its observed features)");
   cmd->add_option("--others", args->others, "Images to draw the lines in, comma-separated (default: those that see the region)")
       ->delimiter(',');
   cmd->add_option("--max_others", args->max_others, "How many other images to choose")->capture_default_str();
@@ -86,7 +87,7 @@ void AddEpipolarCommand(CLI::App& app) {
   cmd->add_option("--height", args->height, "Height of each panel in pixels")
       ->check(RangeValue(64, 4096))
       ->capture_default_str();
-  cmd->add_option("--output", args->output, "Output picture (.png or .jpg)")->required();
+  cmd->add_option("--output,--output_path,-o", args->output, "Output picture (.png or .jpg)")->required();
   cmd->callback([args]() { RunEpipolar(*args); });
 }
 

@@ -33,7 +33,8 @@ void AddFeaturesCommand(CLI::App& app) {
       "written in OpenMVG's format: <output>/<image>.feat, .desc and image_describer.json.");
   auto args = std::make_shared<FeaturesArguments>();
   cmd->add_option("--sfm_data,-s", args->sfm_data, "sfm_data.json from 'prunesfm init'")->required();
-  cmd->add_option("--output,-o", args->output, "Folder of the feature files (OpenMVG's matches folder)")->required();
+  cmd->add_option("--output,--output_path,-o", args->output,
+                  "Folder of the feature files (OpenMVG's matches folder)")->required();
   cmd->add_option("--num_threads", args->num_threads, "Threads (default: every core)")->check(PositiveValue());
   AddFeatureOptions(cmd, &args->settings);
   cmd->callback([args]() { RunFeatures(*args); });

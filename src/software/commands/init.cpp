@@ -27,7 +27,8 @@ void AddInitCommand(CLI::App& app) {
       "are reported and skipped.");
   auto args = std::make_shared<InitArguments>();
   cmd->add_option("--image_dir,-i", args->image_dir, "Folder of images (jpg, png, tif, ...)")->required();
-  cmd->add_option("--output,-o", args->output, "sfm_data.json to write (e.g. OUT/matches/sfm_data.json)")->required();
+  cmd->add_option("--output,--output_path,-o", args->output,
+                  "sfm_data.json to write (e.g. OUT/matches/sfm_data.json)")->required();
   cmd->add_option("--num_threads", args->num_threads, "Threads (default: every core)")->check(PositiveValue());
   AddInitOptions(cmd, &args->settings);
   cmd->callback([args]() {

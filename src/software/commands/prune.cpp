@@ -167,7 +167,8 @@ void AddPruneCommand(CLI::App& app) {
   cmd->add_option("--sfm_data", args->sfm_data, "OpenMVG sfm_data.json/.bin with views and intrinsics");
   cmd->add_option("--matches_dir", args->matches_dir, "Folder of the .feat files and the match file");
   cmd->add_option("--match_file", args->match_file, "Match file (default: matches.e/f/putative .bin/.txt)");
-  cmd->add_option("--output,-o", args->output, "Pruned database, or pruned OpenMVG match file")->required();
+  cmd->add_option("--output,--output_path,-o", args->output,
+                  "Pruned database, or pruned OpenMVG match file")->required();
   cmd->add_option("--report", args->report, "Pruning report JSON (default: OUTPUT.pruning_report.json)");
   AddSolverOptions(cmd, &args->settings);
   AddPruningOptions(cmd, &args->settings.pruning, false);

@@ -51,8 +51,8 @@ void AddReconstructCommand(CLI::App& app) {
   cmd->add_option("--sfm_data", args->sfm_data, "OpenMVG sfm_data.json/.bin with views and intrinsics");
   cmd->add_option("--matches_dir", args->matches_dir, "Folder of the .feat files and the match file");
   cmd->add_option("--match_file", args->match_file, "Match file (default: matches.e/f/putative .bin/.txt)");
-  cmd->add_option("--database", args->database, "COLMAP database.db");
-  cmd->add_option("--output,-o", args->output, "Output folder")->required();
+  cmd->add_option("--database,--database_path", args->database, "COLMAP database.db");
+  cmd->add_option("--output,--output_path,-o", args->output, "Output folder")->required();
   AddOverwriteFlag(cmd, &args->overwrite, OverwriteMeans::kWriteInto);
   AddEngineOptions(cmd, &args->engine);
   cmd->callback([args]() { RunReconstruct(*args); });

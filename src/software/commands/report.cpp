@@ -73,7 +73,8 @@ void AddReportCommand(CLI::App& app) {
       ->required();
   cmd->add_option("--compare", args->compare, "A second run folder of the same scene, shown side by side");
   cmd->add_option("--ground_truth", args->ground_truth, "gt_cameras.txt (or any model): AUC, aligned top view");
-  cmd->add_option("--images", args->images, "Image folder: real pictures in the epipolar checks, coloured points");
+  cmd->add_option("--images,--image_path", args->images,
+                  "Image folder: real pictures in the epipolar checks, coloured points");
   cmd->add_option("--check", args->checks, "Epipolar check IMAGE:x,y (repeatable; default: --num_checks chosen)");
   cmd->add_option("--num_checks", args->num_checks, "Epipolar checks chosen when no --check is given")
       ->capture_default_str();
@@ -83,7 +84,7 @@ void AddReportCommand(CLI::App& app) {
   cmd->add_option("--seed", args->seed, "Seed of the graph layout and the ground-truth alignment")
       ->check(SeedValue())
       ->capture_default_str();
-  cmd->add_option("--output", args->output, "Output HTML file")->required();
+  cmd->add_option("--output,--output_path,-o", args->output, "Output HTML file")->required();
   cmd->callback([args]() { RunReport(*args); });
 }
 

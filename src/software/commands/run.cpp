@@ -173,7 +173,8 @@ void AddRunCommand(CLI::App& app) {
   cmd->add_option("IMAGES_DIR", args->images, "Folder of images");
   cmd->add_option("OUT_DIR", args->output_dir, "Output folder");
   cmd->add_option("--database_path,--database", args->database, "COLMAP database.db");
-  cmd->add_option("--image_path", args->image_path, "With --database: image folder (the points are coloured from its images when they are all there)");
+  cmd->add_option("--image_path", args->image_path,
+                  "With --database: image folder (the points are coloured from its images when they are all there)");
   cmd->add_option("--output_path,--output", args->output, "With --database: output folder");
   cmd->add_flag("--force", args->force, "Rerun every stage, ignoring OUT/run_manifest.json");
   AddOverwriteFlag(cmd, &args->overwrite, OverwriteMeans::kWriteInto);

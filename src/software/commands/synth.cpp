@@ -149,7 +149,7 @@ void AddSynthCommand(CLI::App& app) {
   auto overwrite = std::make_shared<bool>(false);
   sfm_pruning::SyntheticSceneOptions& o = *options;
   cmd->add_option("--scene", o.scene, "Scene: a fixed one, or a family_* whose seed draws the whole scene")->required()->check(CLI::IsMember(sfm_pruning::SyntheticSceneNames()));
-  cmd->add_option("--output,-o", *output, "Output directory (replaced atomically)")->required();
+  cmd->add_option("--output,--output_path,-o", *output, "Output directory (replaced atomically)")->required();
   AddOverwriteFlag(cmd, overwrite.get(), OverwriteMeans::kReplaceTheFolder);
   cmd->add_option("--seed", o.seed, "Random seed: same options and seed give identical files")->check(SeedValue());
   const sfm_pruning::SyntheticLimits& limits = sfm_pruning::kSyntheticLimits;
