@@ -2,6 +2,7 @@
 // one): outputs, skipped images, resumability, and the one-line errors.
 #include <gtest/gtest.h>
 
+#include <cstdlib>
 #include <filesystem>
 #include <fstream>
 
@@ -9,8 +10,11 @@
 
 #include "features/rendered_scene.hpp"
 #include "run_prunesfm.hpp"
+#include "sfm_pruning/io/colmap_database.hpp"
 #include "sfm_pruning/io/colmap_model.hpp"
+#include "sfm_pruning/io/openmvg_features.hpp"
 #include "sfm_pruning/io/openmvg_matches.hpp"
+#include "sfm_pruning/io/openmvg_sfm_data.hpp"
 #include "support/test_data.hpp"
 
 namespace sfm_pruning::testing {
@@ -93,6 +97,45 @@ TEST(CliFrontEnd, StagesRunOneByOneWithSequentialPairs) {
   const PairwiseMatches putative = ReadOpenMvgMatches(matches / "matches.putative.bin");
   EXPECT_EQ(putative.size(), 3u);
   for (const auto& [pair, list] : putative) EXPECT_EQ(pair.second, pair.first + 1);
+}
+
+// OUT/database.db holds the run's features and verified matches as COLMAP 3.8 stores them, and
+// COLMAP's own mapper reconstructs from it (when /usr/bin/colmap is installed).
+TEST(CliFrontEnd, RunWritesADatabaseThatColmapMapsFrom) {
+  const fs::path images = RenderedFolder("cli_front_end_database", 5);
+  const fs::path out = images.parent_path() / "out";
+  const CommandResult result =
+      RunPrunesfm({"run", images.string(), out.string(), "--focal", "420", "--max_features", "3000"});
+  ASSERT_EQ(result.exit_code, 0) << result.err;
+  const ColmapDatabase database = ReadColmapDatabase(out / "database.db");
+  EXPECT_EQ(database.sfm_data.views.size(), 5u);
+  EXPECT_TRUE(database.intrinsics_with_guessed_focal.empty());  // --focal given: trusted
+  const SfmData scene =
+      ReadSfmData(out / "matches" / "sfm_data.json", SfmDataParts::kViews | SfmDataParts::kIntrinsics);
+  const FeaturesPerView features = ReadOpenMvgFeatures(scene, out / "matches", true);
+  for (const auto& [view_id, set] : features) {
+    ASSERT_EQ(database.features.count(view_id), 1u) << view_id;
+    EXPECT_EQ(database.features.at(view_id).keypoints.size(), set.keypoints.size()) << view_id;
+  }
+  const PairwiseMatches verified = ReadOpenMvgMatches(out / "matches" / "matches.e.bin");
+  ASSERT_EQ(database.verified.size(), verified.size());
+  for (const auto& [pair, inliers] : verified) {
+    const ColmapTwoViewGeometry& geometry = database.verified.at(pair);
+    EXPECT_EQ(geometry.inliers, inliers);
+    EXPECT_EQ(geometry.config, static_cast<int>(ColmapTwoViewConfig::kCalibrated));
+    EXPECT_TRUE(geometry.relative_pose.has_value());
+  }
+
+  const fs::path colmap = "/usr/bin/colmap";
+  if (!fs::exists(colmap)) GTEST_SKIP() << "COLMAP not installed at " << colmap << "; its mapper not tried";
+  const fs::path sparse = out.parent_path() / "colmap_sparse";
+  fs::create_directories(sparse);
+  const std::string command = "QT_QPA_PLATFORM=offscreen " + colmap.string() + " mapper --database_path " +
+                              (out / "database.db").string() + " --image_path " + images.string() +
+                              " --output_path " + sparse.string() + " --Mapper.num_threads 1 > " +
+                              (sparse / "mapper.log").string() + " 2>&1";
+  ASSERT_EQ(std::system(command.c_str()), 0) << command;
+  EXPECT_EQ(ReadColmapModel(sparse / "0").PosedViewIds().size(), 5u);
 }
 
 TEST(CliFrontEnd, BadInputIsOneLine) {

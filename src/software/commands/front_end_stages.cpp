@@ -9,8 +9,10 @@
 #include "sfm_pruning/features/image_listing.hpp"
 #include "sfm_pruning/features/pair_selection.hpp"
 #include "sfm_pruning/features/sift_extraction.hpp"
+#include "sfm_pruning/geometry/so3.hpp"
 #include "sfm_pruning/global/view_graph_builder.hpp"
 #include "sfm_pruning/io/camera_priors.hpp"
+#include "sfm_pruning/io/colmap_database.hpp"
 #include "sfm_pruning/io/k_file.hpp"
 #include "sfm_pruning/io/openmvg_features.hpp"
 #include "sfm_pruning/io/openmvg_matches.hpp"
@@ -215,9 +217,43 @@ sfm_pruning::FeaturesPerView RunFeatureStage(const FeatureSettings& settings, co
   return features;
 }
 
+namespace {
+
+// The verified graph as COLMAP's database holds it; `features` are moved in and must be moved back.
+void WriteMatchDatabase(const sfm_pruning::SfmData& scene, const sfm_pruning::ViewGraph& graph,
+                        const sfm_pruning::PairwiseMatches& putative, const fs::path& matches_dir,
+                        sfm_pruning::FeaturesPerView* features, const fs::path& path) {
+  sfm_pruning::ColmapDatabase database;
+  database.sfm_data = scene;
+  database.sfm_data.root_path.clear();
+  const fs::path priors = matches_dir / sfm_pruning::kCameraPriorsFileName;
+  if (fs::exists(priors)) {
+    database.intrinsics_with_guessed_focal = sfm_pruning::ReadCameraPriors(priors).IntrinsicsWithGuessedFocal();
+  }
+  database.putative = putative;
+  for (const auto& [pair, edge] : graph.Edges()) {
+    if (!edge.is_valid) continue;
+    sfm_pruning::ColmapTwoViewGeometry& geometry = database.verified[pair];
+    geometry.inliers = edge.matches;
+    geometry.config = static_cast<int>(sfm_pruning::ColmapTwoViewConfig::kCalibrated);
+    geometry.E = sfm_pruning::SkewMatrix(edge.relative_pose.translation) * edge.relative_pose.rotation;
+    geometry.relative_pose = edge.relative_pose;
+  }
+  database.features = std::move(*features);
+  try {
+    sfm_pruning::WriteColmapDatabase(database, path);
+  } catch (...) {
+    *features = std::move(database.features);
+    throw;
+  }
+  *features = std::move(database.features);
+}
+
+}  // namespace
+
 MatchStageSummary RunMatchStage(const MatchSettings& settings, const sfm_pruning::SfmData& scene,
-                                const sfm_pruning::FeaturesPerView& features, const fs::path& matches_dir,
-                                int num_threads) {
+                                sfm_pruning::FeaturesPerView* features, const fs::path& matches_dir, int num_threads,
+                                const fs::path& colmap_database) {
   MatchStageSummary summary;
   const sfm_pruning::PairSet pairs = SelectPairs(settings, scene);
   summary.num_pairs = pairs.size();
@@ -232,7 +268,7 @@ MatchStageSummary RunMatchStage(const MatchSettings& settings, const sfm_pruning
   options.seed = settings.seed;
   options.num_threads = num_threads;
   const sfm_pruning::PairwiseMatches putative =
-      sfm_pruning::MatchDescriptors(features, pairs, options, ProgressOnStderr());
+      sfm_pruning::MatchDescriptors(*features, pairs, options, ProgressOnStderr());
   summary.num_putative_pairs = putative.size();
   for (const auto& [pair, matches] : putative) summary.num_putative_matches += matches.size();
   fs::create_directories(matches_dir);
@@ -248,7 +284,7 @@ MatchStageSummary RunMatchStage(const MatchSettings& settings, const sfm_pruning
   verify.keep_largest_component = false;
   sfm_pruning::ViewGraphBuildReport report;
   const sfm_pruning::ViewGraph graph =
-      sfm_pruning::BuildViewGraphFromMatches(verify, scene, features, putative, &report, ProgressOnStderr());
+      sfm_pruning::BuildViewGraphFromMatches(verify, scene, *features, putative, &report, ProgressOnStderr());
   sfm_pruning::PairwiseMatches verified;
   for (const auto& [pair, edge] : graph.Edges()) {
     if (!edge.is_valid) continue;
@@ -261,6 +297,10 @@ MatchStageSummary RunMatchStage(const MatchSettings& settings, const sfm_pruning
        " with >= " + std::to_string(options.min_num_matches) + " matches (" + std::to_string(summary.num_putative_matches) + " matches), " +
        std::to_string(summary.num_verified_pairs) + " verified (" + std::to_string(summary.num_verified_inliers) +
        " inliers); wrote matches.putative.bin, matches.e.bin");
+  if (!colmap_database.empty()) {
+    WriteMatchDatabase(scene, graph, putative, matches_dir, features, colmap_database);
+    Info("wrote " + colmap_database.string() + " (COLMAP database of the same features and matches)");
+  }
   return summary;
 }
 

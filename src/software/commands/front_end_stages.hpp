@@ -89,9 +89,14 @@ struct MatchStageSummary {
   size_t num_verified_inliers = 0;
 };
 
-// Features (with descriptors) -> matches.putative.bin and matches.e.bin in matches_dir.
+// Features (with descriptors) -> matches.putative.bin and matches.e.bin in matches_dir. With a
+// `colmap_database` path, also the same features, matches and verified pairs as a COLMAP 3.8
+// database (WriteColmapDatabase: keypoints, descriptors, matches, two_view_geometries with the
+// inliers, E and the relative pose, config CALIBRATED; cameras whose focal `init` guessed, per
+// matches_dir/camera_priors.json, get prior_focal_length 0), for colmap mapper, glomap mapper
+// and prunesfm prune. `features` is left as it was.
 MatchStageSummary RunMatchStage(const MatchSettings& settings, const sfm_pruning::SfmData& scene,
-                                const sfm_pruning::FeaturesPerView& features,
-                                const std::filesystem::path& matches_dir, int num_threads);
+                                sfm_pruning::FeaturesPerView* features, const std::filesystem::path& matches_dir,
+                                int num_threads, const std::filesystem::path& colmap_database = {});
 
 }  // namespace prunesfm

@@ -16,6 +16,7 @@ struct MatchArguments {
   MatchSettings settings;
   std::string sfm_data;
   std::string matches_dir;
+  std::string colmap_database;
   int num_threads = 0;
 };
 
@@ -23,9 +24,11 @@ void RunMatch(const MatchArguments& args) {
   using sfm_pruning::SfmDataParts;
   const sfm_pruning::SfmData scene =
       sfm_pruning::ReadSfmData(args.sfm_data, SfmDataParts::kViews | SfmDataParts::kIntrinsics);
-  const sfm_pruning::FeaturesPerView features =
+  RefuseOutputOverInput(args.colmap_database, {args.sfm_data, args.matches_dir});
+  sfm_pruning::FeaturesPerView features =
       sfm_pruning::ReadOpenMvgFeatures(scene, args.matches_dir, true, ProgressOnStderr());
-  RunMatchStage(args.settings, scene, features, args.matches_dir, FrontEndThreads(args.num_threads));
+  RunMatchStage(args.settings, scene, &features, args.matches_dir, FrontEndThreads(args.num_threads),
+                args.colmap_database);
 }
 
 }  // namespace
@@ -41,6 +44,9 @@ void AddMatchCommand(CLI::App& app) {
   cmd->add_option("--matches_dir,-m", args->matches_dir, "Folder of the .feat/.desc files; matches are written here")
       ->required();
   cmd->add_option("--num_threads", args->num_threads, "Threads (default: every core)")->check(PositiveValue());
+  cmd->add_option("--colmap_database", args->colmap_database,
+                  "Also write the features, matches and verified pairs as this COLMAP database.db (replaced "
+                  "atomically), for colmap mapper, glomap mapper or prunesfm prune");
   AddMatchOptions(cmd, &args->settings, true);
   cmd->callback([args]() { RunMatch(*args); });
 }

@@ -28,6 +28,7 @@ struct RunArguments {
   FeatureSettings features;
   MatchSettings match;
   bool force = false;
+  bool no_colmap_database = false;
   bool overwrite = false;
   bool num_threads_given = false;
   std::string images;
@@ -100,10 +101,14 @@ void RunFromImages(const RunArguments& args, const fs::path& images, const fs::p
   match.max_epipolar_error_deg = args.engine.max_epipolar_error_deg;
   match.verification_precision_ratio = args.engine.verification_precision_ratio;
   const std::string match_key = HashKey(features_key + SettingsKey(match) + FileFingerprint(match.pair_list));
-  timings.push_back(RunOrReuse(&manifest, "match", match_key, {matches_dir / "matches.e.bin"}, args.force, [&]() {
+  // OUT/database.db: the same features and matches for COLMAP's and GLOMAP's mappers.
+  const fs::path database = args.no_colmap_database ? fs::path() : out / "database.db";
+  std::vector<fs::path> match_outputs = {matches_dir / "matches.e.bin"};
+  if (!database.empty()) match_outputs.push_back(database);
+  timings.push_back(RunOrReuse(&manifest, "match", match_key, match_outputs, args.force, [&]() {
     const sfm_pruning::SfmData scene = read_scene();
     if (!features) features = sfm_pruning::ReadOpenMvgFeatures(scene, matches_dir, true, ProgressOnStderr());
-    RunMatchStage(match, scene, *features, matches_dir, threads);
+    RunMatchStage(match, scene, &*features, matches_dir, threads, database);
   }));
   features.reset();  // descriptors are not needed any more
 
@@ -177,6 +182,9 @@ void AddRunCommand(CLI::App& app) {
                   "With --database: image folder (the points are coloured from its images when they are all there)");
   cmd->add_option("--output_path,--output", args->output, "With --database: output folder");
   cmd->add_flag("--force", args->force, "Rerun every stage, ignoring OUT/run_manifest.json");
+  cmd->add_flag("--no_colmap_database", args->no_colmap_database,
+                "From images: do not write OUT/database.db (the features and matches for colmap mapper, glomap "
+                "mapper or prunesfm prune; it repeats the descriptors of OUT/matches)");
   AddOverwriteFlag(cmd, &args->overwrite, OverwriteMeans::kWriteInto);
   AddEngineOptions(cmd, &args->engine);
   AddInitOptions(cmd, &args->init);
