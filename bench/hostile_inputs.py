@@ -786,7 +786,7 @@ def run_case(prunesfm, case, case_dir, timeout):
     before = snapshot(case_dir)
     start = time.monotonic()
     proc = subprocess.Popen([prunesfm, *case.argv], cwd=case_dir, stdout=subprocess.PIPE, stderr=subprocess.PIPE,
-                            text=True, errors="replace", start_new_session=True)
+                            text=True, errors="replace", process_group=0)
     try:
         stdout, stderr = proc.communicate(timeout=timeout)
         hung = False

@@ -52,20 +52,20 @@ CONFIGS = [
     ("without the loop check across subgraph pairs", "GLOBAL_PRUNED", ["--prune_subgraph_loops", "false"]),
     ("paper's partition weight: inlier counts", "GLOBAL_PRUNED", ["--prune_partition_weight", "inliers"]),
     ("trusted forest ranked by match coverage", "GLOBAL_PRUNED", ["--prune_link_trust", "match_coverage"]),
-    ("triangle vote and longer cycles (before session 15)", "GLOBAL_PRUNED",
+    ("triangle vote and longer cycles (the earlier loop check)", "GLOBAL_PRUNED",
      ["--prune_loop_method", "triangle_vote", "--prune_link_trust", "match_coverage"]),
-    ("session 14's defaults: inlier partition, triangle vote", "GLOBAL_PRUNED",
+    ("the earlier defaults: inlier partition, triangle vote", "GLOBAL_PRUNED",
      ["--prune_partition_weight", "inliers", "--prune_loop_method", "triangle_vote", "--prune_link_trust",
       "match_coverage"]),
     ("triangle vote on triangles only (no cycle pass)", "GLOBAL_PRUNED",
      ["--prune_loop_method", "triangle_vote", "--prune_loop_max_cycle_length", "3"]),
     ("below the break-even the largest candidate wins", "GLOBAL_PRUNED",
      ["--prune_relative_coverage_break_even", "0"]),
-    ("RANSAC sample cap 4 (before session 14)", "GLOBAL_PRUNED", ["--prune_max_sample_size", "4"]),
+    ("RANSAC sample cap 4 (the earlier cap)", "GLOBAL_PRUNED", ["--prune_max_sample_size", "4"]),
     ("with a refit of the RANSAC winner (3 rounds)", "GLOBAL_PRUNED", ["--prune_refine_rounds", "3"]),
 ] + [
-    # The additions that session 29 made the defaults (docs/pruning.md), each taken away alone.
-    (f"without {what} (session 29)", "GLOBAL_PRUNED", off) for what, off in [
+    # The additions of the repetition configuration (docs/pruning.md), each taken away alone.
+    (f"without {what} (a default addition)", "GLOBAL_PRUNED", off) for what, off in [
         ("the precise verification", ["--verification_precision_ratio", "0"]),
         ("the extra positioning starts", ["--positioning_random_starts", "1"]),
         ("the model audit", ["--prune_model_audit", "false"]),
@@ -75,9 +75,9 @@ CONFIGS = [
         ("the landmark check", ["--prune_landmark_check_deg", "0"]),
     ]
 ] + [
-    ("the audit's full solves (session 28)", "GLOBAL_PRUNED",
+    ("the audit's full solves ", "GLOBAL_PRUNED",
      ["--prune_audit_model", "full", "--prune_audit_refine_final", "false"]),
-    ("the defaults before session 29", "GLOBAL_PRUNED",
+    ("the defaults before the repetition configuration", "GLOBAL_PRUNED",
      ["--verification_precision_ratio", "0", "--positioning_random_starts", "1", "--prune_model_audit", "false", "--prune_bisect_unsplittable", "false", "--prune_baseline_ratio_factor", "0",
       "--prune_trust_prior_edges", "0", "--prune_landmark_check_deg", "0"]),
 ]

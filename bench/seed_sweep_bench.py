@@ -9,8 +9,8 @@ scored by AUC@5 against the reference (success: ≥ 90, issue 5's target).
 Synthetic scenes (--synthetic, e.g. street): `prunesfm synth --scene S --seed SEED` once (--seed), scored
 by AUC@10 against the ground truth (success: ≥ 95, issue 5's target).
 For every scene and every seed in --seeds, `prunesfm run --engine GLOBAL_PRUNED --seed S
---num_threads --threads` with each --variant's extra arguments (default: the defaults, and session
-14's pruning: the inlier-weighted partition and the triangle vote; with --synthetic: the defaults
+--num_threads --threads` with each --variant's extra arguments (default: the defaults, and the
+earlier pruning: the inlier-weighted partition and the triangle vote; with --synthetic: the defaults
 and the street configuration of docs/pruning.md). Python 3 standard library only.
 """
 
@@ -27,7 +27,7 @@ import run_benchmarks as rb  # noqa: E402
 
 DEFAULT_VARIANTS = [
     "defaults=",
-    "session 14 (inlier partition, triangle vote)=--prune_partition_weight inliers --prune_link_trust match_coverage "
+    "the earlier defaults (inlier partition, triangle vote)=--prune_partition_weight inliers --prune_link_trust match_coverage "
     "--prune_loop_method triangle_vote",
 ]
 SYNTHETIC_VARIANTS = [
