@@ -3,8 +3,10 @@
 # Eigen alignment is an ODR rule across the whole process: libopengv.so and libceres.a were built
 # for baseline x86-64 (16-byte Eigen alignment, malloc already aligned). Every translation unit of
 # ours must see the same Eigen allocator configuration, so we never add -march=native / -mavx and
-# we pin the two Eigen macros project-wide (see docs/dependencies.md).
-add_compile_definitions(EIGEN_MAX_ALIGN_BYTES=16 EIGEN_MALLOC_ALREADY_ALIGNED=1)
+# we pin the two Eigen macros project-wide (see docs/dependencies.md). The library's targets also
+# carry them as usage requirements, so a project built on the installed package cannot disagree.
+set(PRUNESFM_EIGEN_DEFINITIONS EIGEN_MAX_ALIGN_BYTES=16 EIGEN_MALLOC_ALREADY_ALIGNED=1)
+add_compile_definitions(${PRUNESFM_EIGEN_DEFINITIONS})
 
 set(PRUNESFM_WARNING_FLAGS -Wall -Wextra -Wpedantic -Wno-unused-parameter)
 if(PRUNESFM_WARNINGS_AS_ERRORS)

@@ -7,10 +7,20 @@ function(prunesfm_add_module name)
   set(target sfm_pruning_${name})
   add_library(${target} STATIC ${ARG_SOURCES})
   add_library(sfm_pruning::${name} ALIAS ${target})
-  target_include_directories(${target} PUBLIC ${PROJECT_SOURCE_DIR}/src)
+  # Headers: the source tree when building, <prefix>/include (sfm_pruning/<module>/...) installed.
+  target_include_directories(${target} PUBLIC $<BUILD_INTERFACE:${PROJECT_SOURCE_DIR}/src>
+                                              $<INSTALL_INTERFACE:${CMAKE_INSTALL_INCLUDEDIR}>)
+  # The Eigen configuration every user of our headers must share (PruneSfMFlags.cmake says why).
+  target_compile_definitions(${target} PUBLIC ${PRUNESFM_EIGEN_DEFINITIONS})
   target_compile_options(${target} PRIVATE ${PRUNESFM_WARNING_FLAGS})
   target_link_libraries(${target} PUBLIC ${ARG_DEPENDS})
-  set_target_properties(${target} PROPERTIES POSITION_INDEPENDENT_CODE ON)
+  # A sanitized library needs the sanitizers' runtime in whatever links it, installed users too.
+  if(PRUNESFM_SANITIZE)
+    target_link_options(${target} INTERFACE ${PRUNESFM_SANITIZERS})
+  endif()
+  # Installed and exported as PruneSfM::<NAME> (cmake/PruneSfMInstall.cmake).
+  set_target_properties(${target} PROPERTIES POSITION_INDEPENDENT_CODE ON EXPORT_NAME ${name})
+  install(TARGETS ${target} EXPORT PruneSfMTargets ARCHIVE DESTINATION ${CMAKE_INSTALL_LIBDIR})
 endfunction()
 
 # prunesfm_add_test(NAME SOURCES ... DEPENDS ... [LABELS ...])

@@ -22,13 +22,14 @@ if [[ "${1:-}" == "--no-sanitizers" ]]; then
   build=build/release
   echo "== Release build (warnings are errors)"
   rm -rf "$build"
-  cmake -S . -B "$build" -G Ninja -DCMAKE_BUILD_TYPE=Release -DPRUNESFM_WARNINGS_AS_ERRORS=ON >/dev/null
+  cmake -S . -B "$build" -G Ninja -DCMAKE_BUILD_TYPE=Release -DPRUNESFM_WARNINGS_AS_ERRORS=ON \
+    -DCMAKE_INSTALL_PREFIX="$root/$build/install" >/dev/null
 else
   build=build/sanitize
   echo "== ASan+UBSan build at -O1 (warnings are errors)"
   rm -rf "$build"
   cmake -S . -B "$build" -G Ninja -DCMAKE_BUILD_TYPE=RelWithDebInfo -DCMAKE_CXX_FLAGS_RELWITHDEBINFO="-O1 -g1" \
-    -DPRUNESFM_SANITIZE=ON -DPRUNESFM_WARNINGS_AS_ERRORS=ON >/dev/null
+    -DPRUNESFM_SANITIZE=ON -DPRUNESFM_WARNINGS_AS_ERRORS=ON -DCMAKE_INSTALL_PREFIX="$root/$build/install" >/dev/null
 fi
 cmake --build "$build" -j "$jobs"
 
@@ -36,6 +37,13 @@ echo "== Tests ($build)"
 export ASAN_OPTIONS=alloc_dealloc_mismatch=0:detect_leaks=1
 export UBSAN_OPTIONS=print_stacktrace=1:halt_on_error=1
 (cd "$build" && ctest --output-on-failure -j "$jobs" --timeout 1200)
+echo "== The installed package in another project (examples/consumer: find_package(PruneSfM), GLOBAL_PRUNED)"
+rm -rf "$build/install" "$build/consumer"
+cmake --install "$build" >/dev/null
+cmake -S examples/consumer -B "$build/consumer" -G Ninja -DCMAKE_BUILD_TYPE=Release \
+  -DCMAKE_PREFIX_PATH="$root/$build/install" >/dev/null
+cmake --build "$build/consumer"
+"$build/consumer/prunesfm_consumer"
 # Every parser's fuzz target over its seeds once (a real fuzzing run: scripts/fuzz.sh 600).
 bash scripts/fuzz.sh
 echo "== All tests passed ($root, $build and build/fuzz)"

@@ -25,9 +25,10 @@ struct Codecs {
   EncodeFunction encode = nullptr;
 };
 
-// Where the module may be: where this build put it, then beside the running executable.
+// Where the module may be: where this build put it, where `cmake --install` puts it, then beside
+// the running executable.
 std::vector<fs::path> ModuleCandidates() {
-  std::vector<fs::path> candidates = {PRUNESFM_IMAGE_CODECS_MODULE};
+  std::vector<fs::path> candidates = {PRUNESFM_IMAGE_CODECS_MODULE, PRUNESFM_IMAGE_CODECS_MODULE_INSTALLED};
   std::error_code error;
   const fs::path executable = fs::read_symlink("/proc/self/exe", error);
   if (!error) candidates.push_back(executable.parent_path() / fs::path(PRUNESFM_IMAGE_CODECS_MODULE).filename());
