@@ -19,12 +19,17 @@ const std::string kPngSignature("\x89PNG\r\n\x1a\n", 8);
 // SOI, an APP0 segment holding an EXIF-style thumbnail end marker, SOS with scan data, EOI.
 std::string Jpeg() {
   return std::string("\xff\xd8\xff\xe0\x00\x06\xff\xd9\x00\x00", 10) + std::string("\xff\xda\x00\x02", 4) +
-         std::string("scan\xff\x00" "data\xff\xd0" "more", 16) + std::string("\xff\xd9", 2);
+         std::string(
+             "scan\xff\x00"
+             "data\xff\xd0"
+             "more",
+             16) +
+         std::string("\xff\xd9", 2);
 }
 
 TEST(ImageFileIntegrity, PngMustReachItsEndChunk) {
-  const std::string png = kPngSignature + Chunk("IHDR", std::string(13, 'h')) + Chunk("IDAT", "pixels") +
-                          Chunk("IEND", "");
+  const std::string png =
+      kPngSignature + Chunk("IHDR", std::string(13, 'h')) + Chunk("IDAT", "pixels") + Chunk("IEND", "");
   EXPECT_TRUE(PngIsComplete(png));
   EXPECT_EQ(ImageCutShortProblem(png), "");
   EXPECT_TRUE(PngIsComplete(png + "appended"));  // bytes after IEND, as libpng allows
@@ -33,7 +38,8 @@ TEST(ImageFileIntegrity, PngMustReachItsEndChunk) {
     EXPECT_EQ(ImageCutShortProblem(png.substr(0, size)), "a PNG cut short: no IEND chunk") << size;
   }
   // A chunk length past the end of the file (a corrupt length) never reaches IEND.
-  const std::string huge_length = kPngSignature + std::string("\xff\xff\xff\xf0", 4) + "IDAT" + Chunk("IEND", "");
+  const std::string huge_length =
+      kPngSignature + std::string("\xff\xff\xff\xf0", 4) + "IDAT" + Chunk("IEND", "");
   EXPECT_FALSE(PngIsComplete(huge_length));
 }
 

@@ -33,7 +33,7 @@ bool JpegIsComplete(const std::string& bytes) {
       ++pos;
       continue;
     }
-    if (marker == kEndOfImage) return false;  // an image without a scan
+    if (marker == kEndOfImage) return false;                     // an image without a scan
     if ((marker >= 0xD0 && marker <= 0xD7) || marker == 0x01) {  // markers without a length
       pos += 2;
       continue;

@@ -9,7 +9,9 @@
 namespace sfm_pruning {
 namespace {
 
-std::string Seconds(double seconds) { return std::to_string(static_cast<long long>(std::lround(seconds))) + " s"; }
+std::string Seconds(double seconds) {
+  return std::to_string(static_cast<long long>(std::lround(seconds))) + " s";
+}
 
 struct ProgressLineState {
   std::mutex mutex;
@@ -47,8 +49,8 @@ ProgressCallback ProgressLines(std::function<void(const std::string& line)> prin
     if (now - state->last_line < interval_seconds) return;
     state->last_line = now;
     const double fraction = static_cast<double>(done) / static_cast<double>(total);
-    std::string line = stage + ": " + std::to_string(static_cast<int>(fraction * 100.0)) + "% " + counts + ", " +
-                       Seconds(elapsed) + " elapsed";
+    std::string line = stage + ": " + std::to_string(static_cast<int>(fraction * 100.0)) + "% " + counts +
+                       ", " + Seconds(elapsed) + " elapsed";
     if (done > 0) line += ", about " + Seconds(elapsed * (1.0 - fraction) / fraction) + " left";
     print(line);
   };

@@ -19,7 +19,7 @@ using SecondsClock = std::function<double()>;
 //   "features: done (50/50) in 31 s"
 // The first kind at most every `interval_seconds` once a stage has run that long, the second
 // when a stage that ran at least that long finishes. Thread-safe.
-ProgressCallback ProgressLines(std::function<void(const std::string& line)> print, double interval_seconds = 10.0,
-                               SecondsClock clock = {});
+ProgressCallback ProgressLines(std::function<void(const std::string& line)> print,
+                               double interval_seconds = 10.0, SecondsClock clock = {});
 
 }  // namespace sfm_pruning
