@@ -1,6 +1,6 @@
 // The GLOBAL_PRUNED engine through the library API, as another project uses it: a generated
-// object whose two halves look alike (the scene the GLOBAL engine folds), verification, pruning
-// and the final solve, then the pose accuracy against the scene's ground truth.
+// object whose two halves look alike (16 views around it), verification, pruning and the final
+// solve, then the pose accuracy against the scene's ground truth.
 // Exit code 0 when the model is accurate (AUC@10 >= 90), 1 otherwise.
 #include <cstdio>
 
@@ -14,7 +14,7 @@ int main() {
   SyntheticSceneOptions scene_options;
   scene_options.scene = "orbit_symmetric";
   scene_options.seed = 1;
-  scene_options.num_views = 24;
+  scene_options.num_views = 16;
   const SyntheticScene scene = GenerateSyntheticScene(scene_options);
 
   // The engine sees the views and intrinsics only, not the true poses.
