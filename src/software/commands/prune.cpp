@@ -54,7 +54,8 @@ class StageClock {
 };
 
 // Every pair the input holds (verified or only matched), minus the removed ones.
-std::set<ViewPair> PairsToKeep(const ReconstructionInput& input, const std::set<ViewPair>& removed) {
+std::set<ViewPair> PairsToKeep(const sfm_pruning::ReconstructionInput& input,
+                                const std::set<ViewPair>& removed) {
   std::set<ViewPair> keep;
   for (const auto& [pair, geometry] : input.verified) {
     if (removed.count(pair) == 0) keep.insert(pair);
@@ -81,9 +82,9 @@ void RunPrune(const PruneArguments& args) {
   RefuseOutputOverInput(report_path, inputs);
 
   StageClock clock;
-  const ReconstructionInput input =
-      colmap ? ReadColmapInput(args.database)
-             : ReadOpenMvgInput(args.sfm_data, args.matches_dir, args.match_file, ProgressOnStderr());
+  const sfm_pruning::ReconstructionInput input =
+      colmap ? sfm_pruning::ReadColmapInput(args.database)
+             : sfm_pruning::ReadOpenMvgInput(args.sfm_data, args.matches_dir, args.match_file, ProgressOnStderr());
   if (colmap && input.verified.empty()) {
     throw Error(args.database +
                 ": no two-view geometries to prune (verify the matches first, e.g. colmap exhaustive_matcher)");
@@ -92,25 +93,27 @@ void RunPrune(const PruneArguments& args) {
 
   // Cameras whose focal is a guess (COLMAP's prior_focal_length = 0) are calibrated on the view
   // graph first, as `run` does: relative poses verified with a wrong focal mislead the pruning.
+  const sfm_pruning::ReconstructionOptions options = ToReconstructionOptions(args.settings);
   sfm_pruning::SfmData scene = input.scene;
-  const std::set<sfm_pruning::IndexT> to_calibrate = FocalsToCalibrate(args.settings.intrinsics, input);
+  const std::set<sfm_pruning::IndexT> to_calibrate = sfm_pruning::FocalsToCalibrate(options.intrinsics, input);
   nlohmann::json calibration;
   if (!to_calibrate.empty()) {
-    const sfm_pruning::FocalCalibrationReport report = CalibrateFocals(args.settings, input, to_calibrate, &scene);
-    ReportCalibration(report);
+    const sfm_pruning::FocalCalibrationReport report =
+        sfm_pruning::CalibrateFocals(options, input, to_calibrate, &scene, ProgressOnStderr());
+    for (const std::string& line : sfm_pruning::CalibrationLines(report)) Info(line);
     calibration = CalibrationJson(report);
   }
   const double calibration_seconds = clock.Lap();
 
   sfm_pruning::ViewGraphBuildReport build;
-  sfm_pruning::ViewGraph graph = BuildVerifiedViewGraph(args.settings, input, &build, &scene);
+  sfm_pruning::ViewGraph graph = sfm_pruning::BuildVerifiedViewGraph(options, input, &build, &scene, ProgressOnStderr());
   const double verify_seconds = clock.Lap();
   Info("view graph: " + std::to_string(graph.NumValidEdges()) + " edges of " + std::to_string(build.num_pairs) +
        " pairs, " + std::to_string(graph.NumNodes()) + " views");
 
-  const sfm_pruning::PrunedGlobalEngineOptions options = PrunedEngineOptions(args.settings);
   sfm_pruning::ViewGraphPruningReport pruning;
-  PruneViewGraph(options.pruning, &graph, scene, input.features, &pruning, ProgressOnStderr());
+  PruneViewGraph(sfm_pruning::PrunedEngineOptions(options).pruning, &graph, scene, input.features, &pruning,
+                 ProgressOnStderr());
   const double prune_seconds = clock.Lap();
   Info("pruning: " + PruningSummary(pruning));
 

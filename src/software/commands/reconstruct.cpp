@@ -31,10 +31,10 @@ void RunReconstruct(const ReconstructArguments& args) {
   }
   PrepareRunFolder(args.output, args.overwrite);
   const auto start = std::chrono::steady_clock::now();
-  const ReconstructionInput input = args.database.empty()
-                                        ? ReadOpenMvgInput(args.sfm_data, args.matches_dir, args.match_file,
-                                                           ProgressOnStderr())
-                                        : ReadColmapInput(args.database);
+  const sfm_pruning::ReconstructionInput input =
+      args.database.empty()
+          ? sfm_pruning::ReadOpenMvgInput(args.sfm_data, args.matches_dir, args.match_file, ProgressOnStderr())
+          : sfm_pruning::ReadColmapInput(args.database);
   const double read_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   RunReconstruction(args.engine, input, args.output, read_seconds);
 }

@@ -3,16 +3,15 @@
 #include <CLI/CLI.hpp>
 
 #include <chrono>
-#include <set>
 #include <cstdio>
 #include <filesystem>
 #include <optional>
+#include <set>
+#include <stdexcept>
 
 #include <nlohmann/json.hpp>
 
 #include "sfm_pruning/export/point_colors.hpp"
-#include "sfm_pruning/global/focal_calibration.hpp"
-#include "sfm_pruning/global/global_engine.hpp"
 #include "sfm_pruning/io/colmap_model.hpp"
 #include "sfm_pruning/io/openmvg_sfm_data.hpp"
 #include "sfm_pruning/io/ply.hpp"
@@ -35,86 +34,9 @@ double SecondsSince(std::chrono::steady_clock::time_point start) {
   return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
 }
 
-std::string PairName(const sfm_pruning::ViewPair& pair) {
-  return std::to_string(pair.first) + "-" + std::to_string(pair.second);
-}
-
 }  // namespace
 
-sfm_pruning::ViewGraph BuildVerifiedViewGraph(const EngineSettings& settings, const ReconstructionInput& input,
-                                              sfm_pruning::ViewGraphBuildReport* report,
-                                              const sfm_pruning::SfmData* scene) {
-  const sfm_pruning::SfmData& views_and_intrinsics = scene != nullptr ? *scene : input.scene;
-  if (input.verified.empty() && input.putative.empty()) {
-    throw Error(input.source + ": no two images match (no two-view geometries and no matches): nothing to reconstruct");
-  }
-  sfm_pruning::ViewGraphBuildOptions options;
-  options.seed = settings.seed;
-  options.num_threads = settings.num_threads;
-  options.two_view.relative_pose.max_angular_error_deg = settings.max_epipolar_error_deg;
-  options.two_view.relative_pose.precision_check_ratio = settings.verification_precision_ratio;
-  sfm_pruning::ViewGraph graph;
-  try {
-    graph = input.verified.empty()
-                ? BuildViewGraphFromMatches(options, views_and_intrinsics, input.features, input.putative, report,
-                                            ProgressOnStderr())
-                : BuildViewGraphFromVerifiedPairs(options, views_and_intrinsics, input.features, input.verified,
-                                                  report, ProgressOnStderr());
-  } catch (const Error& e) {
-    throw Error(input.source + ": " + e.what());
-  }
-  if (graph.NumValidEdges() == 0) {
-    std::string message = input.source + ": no two images match: the verification rejected all " +
-                          std::to_string(report->num_pairs) + " matched pairs";
-    if (!report->rejected_pairs.empty()) {
-      message += " (pair " + PairName(report->rejected_pairs.front().pair) + ": " +
-                 report->rejected_pairs.front().reason + ")";
-    }
-    throw Error(message);
-  }
-  return graph;
-}
-
-// Verified pairs give their inliers directly; putative matches are verified once with the prior
-// intrinsics first (the caller verifies them again with the calibrated ones).
-sfm_pruning::FocalCalibrationReport CalibrateFocals(const EngineSettings& settings, const ReconstructionInput& input,
-                                                    const std::set<sfm_pruning::IndexT>& refined,
-                                                    sfm_pruning::SfmData* scene,
-                                                    std::optional<VerifiedViewGraph>* prior_graph) {
-  const sfm_pruning::FocalCalibrationOptions options;
-  if (!input.verified.empty()) {
-    return CalibrateFocalLengths(options, refined, sfm_pruning::InliersOfPairs(input.verified), input.features, scene);
-  }
-  VerifiedViewGraph prior;
-  prior.graph = BuildVerifiedViewGraph(settings, input, &prior.build, scene);
-  const sfm_pruning::FocalCalibrationReport report =
-      CalibrateFocalLengths(options, refined, sfm_pruning::InliersOfEdges(prior.graph), input.features, scene);
-  if (prior_graph != nullptr) *prior_graph = std::move(prior);
-  return report;
-}
-
 namespace {
-
-// Verification with the intrinsics of `scene`, then the engine; a failed engine is reported in
-// report.success.
-struct Solution {
-  sfm_pruning::ViewGraphBuildReport build;
-  double verify_seconds = 0.0;
-  sfm_pruning::GlobalEngineReport report;
-  sfm_pruning::SfmData model;
-  std::optional<sfm_pruning::ViewGraphPruningReport> pruning;
-  // The graph before pruning, with the cuts and subgraphs: what `prunesfm report` draws.
-  sfm_pruning::RunViewGraph view_graph;
-};
-
-// kFocalSearch: the GLOBAL engine with WithFocalSearchSchedule, whatever --engine says (its model
-// serves only its focal, which the full solve refines again; the pruning would double its cost).
-enum class Schedule { kFull, kFocalSearch };
-
-// `verified`: a graph already verified with the intrinsics of `scene` (none: verify here).
-Solution Solve(const EngineSettings& settings, const ReconstructionInput& input, const sfm_pruning::SfmData& scene,
-               const std::set<sfm_pruning::IndexT>& refined, Schedule schedule,
-               const VerifiedViewGraph* verified = nullptr);
 
 nlohmann::json TimingsJson(const EngineSettings& settings, const sfm_pruning::ViewGraphBuildReport& build,
                            const sfm_pruning::GlobalEngineReport& engine, const sfm_pruning::SfmData& model,
@@ -241,16 +163,6 @@ void WriteModelOutputs(const sfm_pruning::SfmData& model, const sfm_pruning::Fea
   sfm_pruning::WritePly(model, output / "cloud_and_poses.ply");
 }
 
-sfm_pruning::PositioningMethod Positioning(const EngineSettings& settings) {
-  return settings.positioning == "GLOMAP" ? sfm_pruning::PositioningMethod::kGlobalPositioning
-                                          : sfm_pruning::PositioningMethod::kTranslationAveraging;
-}
-
-sfm_pruning::PositioningTracks PositioningTracks(const EngineSettings& settings) {
-  return settings.positioning_tracks == "MATCH_STARS" ? sfm_pruning::PositioningTracks::kMatchStars
-                                                      : sfm_pruning::PositioningTracks::kConnected;
-}
-
 }  // namespace
 
 void AddEngineOptions(CLI::App* cmd, EngineSettings* settings) {
@@ -262,18 +174,21 @@ void AddEngineOptions(CLI::App* cmd, EngineSettings* settings) {
   AddPruningOptions(cmd, &settings->pruning, true);
 }
 
-sfm_pruning::PrunedGlobalEngineOptions PrunedEngineOptions(const EngineSettings& settings) {
-  sfm_pruning::PrunedGlobalEngineOptions options;
+sfm_pruning::ReconstructionOptions ToReconstructionOptions(const EngineSettings& settings) {
+  sfm_pruning::ReconstructionOptions options;
+  options.engine = sfm_pruning::ParseReconstructionEngine(settings.engine);
+  options.seed = settings.seed;
+  options.num_threads = settings.num_threads;
+  options.positioning = settings.positioning == "GLOMAP" ? sfm_pruning::PositioningMethod::kGlobalPositioning
+                                                         : sfm_pruning::PositioningMethod::kTranslationAveraging;
+  options.positioning_tracks = settings.positioning_tracks == "MATCH_STARS" ? sfm_pruning::PositioningTracks::kMatchStars
+                                                                             : sfm_pruning::PositioningTracks::kConnected;
+  options.positioning_random_starts = settings.positioning_random_starts;
+  options.positioning_start_screening_iterations = settings.positioning_start_screening;
+  options.max_epipolar_error_deg = settings.max_epipolar_error_deg;
+  options.verification_precision_ratio = settings.verification_precision_ratio;
   options.pruning = settings.pruning;
-  options.engine.positioning = Positioning(settings);
-  options.pruning.partition.engine.positioning = Positioning(settings);
-  options.engine.positioning_tracks = PositioningTracks(settings);
-  options.pruning.partition.engine.positioning_tracks = PositioningTracks(settings);
-  // The solve of the pruned graph only (the audit's, whose poses the final adjustment keeps): the
-  // per-community solves are many and small, and the consistency tests already judge each of them.
-  options.engine.positioning_random_starts = settings.positioning_random_starts;
-  options.engine.positioning_start_screening_iterations = settings.positioning_start_screening;
-  options.SetSeedAndThreads(settings.seed, settings.num_threads);
+  options.intrinsics = ToIntrinsicsOptions(settings.intrinsics);
   return options;
 }
 
@@ -319,114 +234,21 @@ void AddSolverOptions(CLI::App* cmd, EngineSettings* settings) {
   });
 }
 
-namespace {
-
-Solution Solve(const EngineSettings& settings, const ReconstructionInput& input, const sfm_pruning::SfmData& scene,
-               const std::set<sfm_pruning::IndexT>& refined, Schedule schedule, const VerifiedViewGraph* verified) {
-  Solution solution;
-  const auto verify_start = std::chrono::steady_clock::now();
-  std::optional<sfm_pruning::ViewGraph> verified_here;
-  if (verified == nullptr) {
-    verified_here = BuildVerifiedViewGraph(settings, input, &solution.build, &scene);
-  } else {
-    solution.build = verified->build;
+void RunReconstruction(const EngineSettings& settings, const sfm_pruning::ReconstructionInput& input,
+                       const fs::path& output, double read_seconds, const std::vector<FrontEndStageTiming>& front_end) {
+  sfm_pruning::ReconstructionResult result;
+  try {
+    result = sfm_pruning::Reconstruct(ToReconstructionOptions(settings), input, ProgressOnStderr(),
+                                      [](const std::string& line) { Info(line); });
+  } catch (const std::invalid_argument& e) {
+    throw Error(input.source + ": " + e.what());
   }
-  const sfm_pruning::ViewGraph& graph = verified != nullptr ? verified->graph : *verified_here;
-  solution.verify_seconds = SecondsSince(verify_start);
-  Info("view graph: " + std::to_string(graph.NumValidEdges()) + " edges of " +
-       std::to_string(solution.build.num_pairs) + " pairs, " + std::to_string(graph.NumNodes()) + " views");
-  const sfm_pruning::BundleAdjustmentOptions bundle = RefiningBundleOptions(settings.intrinsics, input, refined);
-  if (settings.engine == "GLOBAL_PRUNED" && schedule == Schedule::kFull) {
-    sfm_pruning::PrunedGlobalEngineOptions options = PrunedEngineOptions(settings);
-    options.engine.bundle = bundle;  // the final solve; the per-community solves hold the intrinsics
-    sfm_pruning::PrunedGlobalEngineReport pruned;
-    RunPrunedGlobalEngine(options, graph, scene, input.features, &solution.model, &pruned, ProgressOnStderr());
-    solution.report = std::move(pruned.engine);
-    solution.pruning = std::move(pruned.pruning);
-  } else {
-    sfm_pruning::GlobalEngineOptions options;
-    options.seed = settings.seed;
-    options.num_threads = settings.num_threads;
-    options.positioning = Positioning(settings);
-    options.positioning_tracks = PositioningTracks(settings);
-    options.positioning_random_starts = settings.positioning_random_starts;
-    options.positioning_start_screening_iterations = settings.positioning_start_screening;
-    options.bundle = bundle;
-    if (schedule == Schedule::kFocalSearch) options = sfm_pruning::WithFocalSearchSchedule(options);
-    RunGlobalEngine(options, graph, scene, input.features, &solution.model, &solution.report, ProgressOnStderr());
-  }
-  solution.view_graph = sfm_pruning::MakeRunViewGraph(settings.engine, graph, scene,
-                                                      solution.pruning ? &*solution.pruning : nullptr);
-  return solution;
-}
-
-// The cameras whose focal the calibration could not determine: bundle adjustment will move their
-// focal far from the guess, and the relative poses verified with the guess would have to be
-// estimated and solved again. A quick solve finds the focal first, written into `scene`, so that
-// the full solve runs with it. Returns the search's wall time (0 when no camera needed one).
-// `prior_graph`: the calibration's graph when it is still valid for `scene` (else verified here).
-double SearchUncalibratedFocals(const EngineSettings& settings, const ReconstructionInput& input,
-                                const sfm_pruning::FocalCalibrationReport& calibration,
-                                const std::set<sfm_pruning::IndexT>& refined, sfm_pruning::SfmData* scene,
-                                const VerifiedViewGraph* prior_graph) {
-  const std::set<sfm_pruning::IndexT> uncalibrated = UncalibratedFocals(calibration, *scene);
-  if (uncalibrated.empty()) return 0.0;
-  const auto start = std::chrono::steady_clock::now();
-  const Solution search = Solve(settings, input, *scene, refined, Schedule::kFocalSearch, prior_graph);
-  if (search.report.success) {
-    const std::string searched = MovedFocals(*scene, search.model, uncalibrated, 0.0);
-    Info("focal search: " + (searched.empty() ? std::string("the guessed focal stays") : searched));
-    for (const sfm_pruning::IndexT id : uncalibrated) {
-      scene->intrinsics.at(id).SetFocalLength(search.model.intrinsics.at(id).FocalLength());
-    }
-  } else {
-    Info("focal search failed (" + search.report.message + "): solving from the guessed focal");
-  }
-  return SecondsSince(start);
-}
-
-}  // namespace
-
-void RunReconstruction(const EngineSettings& settings, const ReconstructionInput& input, const fs::path& output,
-                       double read_seconds, const std::vector<FrontEndStageTiming>& front_end) {
-  const std::set<sfm_pruning::IndexT> refined = RefinedIntrinsics(settings.intrinsics, input);
-  sfm_pruning::SfmData scene = input.scene;
-  std::optional<sfm_pruning::FocalCalibrationReport> calibration;
-  std::optional<VerifiedViewGraph> prior_graph;
-  const auto calibration_start = std::chrono::steady_clock::now();
-  const std::set<sfm_pruning::IndexT> focals_to_calibrate = FocalsToCalibrate(settings.intrinsics, input);
-  if (settings.intrinsics.focal && !focals_to_calibrate.empty()) {
-    calibration = CalibrateFocals(settings, input, focals_to_calibrate, &scene, &prior_graph);
-    ReportCalibration(*calibration);
-    // An accepted focal changes the intrinsics the prior graph was verified with.
-    for (const sfm_pruning::IntrinsicFocalCalibration& entry : calibration->intrinsics) {
-      if (entry.accepted) prior_graph.reset();
-    }
-  }
-  const double calibration_seconds = SecondsSince(calibration_start);
-
-  const double focal_search_seconds =
-      calibration && settings.intrinsics.focal
-          ? SearchUncalibratedFocals(settings, input, *calibration, refined, &scene,
-                                     prior_graph ? &*prior_graph : nullptr)
-          : 0.0;
-
-  Solution solution = Solve(settings, input, scene, refined, Schedule::kFull);
-  double first_pass_seconds = 0.0;
-  const std::string moved = MovedFocals(scene, solution.model, refined, settings.intrinsics.refocus_threshold);
-  if (solution.report.success && settings.intrinsics.focal && !moved.empty()) {
-    // The relative poses were estimated with a focal that bundle adjustment found wrong: verify
-    // again with the refined intrinsics and solve again, once.
-    Info("bundle adjustment moved the focal (" + moved + "): verifying and solving again with the refined intrinsics");
-    first_pass_seconds = solution.verify_seconds + solution.report.total_seconds;
-    for (const sfm_pruning::IndexT id : refined) scene.intrinsics.at(id) = solution.model.intrinsics.at(id);
-    solution = Solve(settings, input, scene, refined, Schedule::kFull);
-  }
-  const sfm_pruning::ViewGraphBuildReport& build = solution.build;
-  const sfm_pruning::GlobalEngineReport& report = solution.report;
-  sfm_pruning::SfmData& model = solution.model;
-  const std::optional<sfm_pruning::ViewGraphPruningReport>& pruning = solution.pruning;
-  const double verify_seconds = solution.verify_seconds;
+  const sfm_pruning::ViewGraphBuildReport& build = result.build;
+  const sfm_pruning::GlobalEngineReport& report = result.engine;
+  sfm_pruning::SfmData& model = result.model;
+  const std::optional<sfm_pruning::ViewGraphPruningReport>& pruning = result.pruning;
+  const std::optional<sfm_pruning::FocalCalibrationReport>& calibration = result.calibration;
+  const std::set<sfm_pruning::IndexT>& refined = result.refined_intrinsics;
   if (!report.success) throw Error(input.source + ": reconstruction failed: " + report.message);
   fs::create_directories(output);
   BeginOutputs(output);
@@ -440,18 +262,20 @@ void RunReconstruction(const EngineSettings& settings, const ReconstructionInput
   }
 
   nlohmann::json timings =
-      TimingsJson(settings, build, report, model, read_seconds, verify_seconds, pruning ? &*pruning : nullptr);
+      TimingsJson(settings, build, report, model, read_seconds, result.verification_seconds,
+                  pruning ? &*pruning : nullptr);
   auto& stage_list = timings.at("stages");
-  if (first_pass_seconds > 0.0) {
-    stage_list.insert(stage_list.begin() + 1, nlohmann::json{{"stage", "first pass"}, {"seconds", first_pass_seconds}});
-  }
-  if (focal_search_seconds > 0.0) {
+  if (result.first_pass_seconds > 0.0) {
     stage_list.insert(stage_list.begin() + 1,
-                      nlohmann::json{{"stage", "focal search"}, {"seconds", focal_search_seconds}});
+                      nlohmann::json{{"stage", "first pass"}, {"seconds", result.first_pass_seconds}});
+  }
+  if (result.focal_search_seconds > 0.0) {
+    stage_list.insert(stage_list.begin() + 1,
+                      nlohmann::json{{"stage", "focal search"}, {"seconds", result.focal_search_seconds}});
   }
   if (calibration) {
     stage_list.insert(stage_list.begin() + 1,
-                      nlohmann::json{{"stage", "focal calibration"}, {"seconds", calibration_seconds}});
+                      nlohmann::json{{"stage", "focal calibration"}, {"seconds", result.calibration_seconds}});
     timings["focal_calibration"] = CalibrationJson(*calibration);
   }
   timings["refined_intrinsics"] = {{"intrinsic_ids", refined},
@@ -471,7 +295,7 @@ void RunReconstruction(const EngineSettings& settings, const ReconstructionInput
   ColorPointsFromImages(settings.num_threads, &model);
   stage_list.push_back({{"stage", "point colours"}, {"seconds", SecondsSince(coloring_start)}});
   WriteModelOutputs(model, input.features, output);
-  sfm_pruning::WriteRunViewGraph(solution.view_graph, output / "view_graph.json");
+  sfm_pruning::WriteRunViewGraph(result.view_graph, output / "view_graph.json");
   WriteJsonAtomically(timings, output / "timings.json");  // last: the run is complete
   std::string stages;
   for (const auto& stage : timings.at("stages")) {

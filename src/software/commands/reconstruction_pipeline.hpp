@@ -1,19 +1,16 @@
 // The part `prunesfm reconstruct` and `prunesfm run` share: engine options on the command line,
-// verification + engine, and the outputs (sfm_data.json, sparse/0, cloud_and_poses.ply,
-// timings.json, view_graph.json).
+// the library's reconstruction controller (sfm_pruning/pipeline/reconstruction.hpp), and the
+// outputs (sfm_data.json, sparse/0, cloud_and_poses.ply, timings.json, view_graph.json).
 #pragma once
 
 #include <cstdint>
 #include <filesystem>
-#include <optional>
-#include <set>
 #include <string>
 #include <vector>
 
-#include "sfm_pruning/global/view_graph_builder.hpp"
+#include "sfm_pruning/pipeline/reconstruction.hpp"
 #include "sfm_pruning/pruning/view_graph_pruning.hpp"
 #include "software/commands/intrinsics_options.hpp"
-#include "software/commands/reconstruction_input.hpp"
 
 namespace CLI {
 class App;
@@ -21,14 +18,16 @@ class App;
 
 namespace prunesfm {
 
+// The flags of sfm_pruning::ReconstructionOptions (pipeline/reconstruction.hpp says what each
+// does), its enumerations by their names on the command line.
 struct EngineSettings {
   std::string engine = "GLOBAL";
   uint64_t seed = 0;
   int num_threads = 1;
   std::string positioning = "GLOMAP";  // or TRANSLATION_AVERAGING
   std::string positioning_tracks = "CONNECTED";  // or MATCH_STARS
-  // The command line's defaults (the library's: 1 start, as GLOMAP): three starts, each screened
-  // for 25 iterations (docs/global.md, "Random starts").
+  // Three starts, each screened for 25 iterations (docs/global.md, "Random starts"), as
+  // ReconstructionOptions; GlobalEngineOptions used alone has GLOMAP's single start.
   int positioning_random_starts = 3;  // GlobalEngineOptions::positioning_random_starts
   int positioning_start_screening = 25;  // GlobalEngineOptions::positioning_start_screening_iterations
   double max_epipolar_error_deg = 0.25;  // RelativePoseOptions::max_angular_error_deg
@@ -46,31 +45,8 @@ void AddSolverOptions(CLI::App* cmd, EngineSettings* settings);
 // pruning options (pruning_options.hpp) to `cmd`.
 void AddEngineOptions(CLI::App* cmd, EngineSettings* settings);
 
-// GLOBAL_PRUNED's options from the settings: the pruning options, the positioning of the
-// per-community and final solves, and one seed / thread count for everything.
-sfm_pruning::PrunedGlobalEngineOptions PrunedEngineOptions(const EngineSettings& settings);
-
-// The verified view graph of `input`: its two-view geometries (poses re-estimated from their
-// inliers) or its putative matches, verified. Throws sfm_pruning::Error naming input.source when
-// there is no edge, or when every pair is rejected. Verified with the intrinsics of `scene`
-// (e.g. calibrated ones) when given, else of input.scene.
-sfm_pruning::ViewGraph BuildVerifiedViewGraph(const EngineSettings& settings, const ReconstructionInput& input,
-                                              sfm_pruning::ViewGraphBuildReport* report,
-                                              const sfm_pruning::SfmData* scene = nullptr);
-
-// A view graph and the report of the verification that built it.
-struct VerifiedViewGraph {
-  sfm_pruning::ViewGraph graph;
-  sfm_pruning::ViewGraphBuildReport build;
-};
-
-// View-graph focal calibration (fundamental matrices) of the cameras `refined` into *scene, from
-// the input's verified pairs, or from its matches verified once with the prior intrinsics; that
-// graph goes to *prior_graph when given (it stays valid if the calibration changes no focal).
-sfm_pruning::FocalCalibrationReport CalibrateFocals(const EngineSettings& settings, const ReconstructionInput& input,
-                                                    const std::set<sfm_pruning::IndexT>& refined,
-                                                    sfm_pruning::SfmData* scene,
-                                                    std::optional<VerifiedViewGraph>* prior_graph = nullptr);
+// The library's options (pipeline/reconstruction.hpp) for the settings the flags filled.
+sfm_pruning::ReconstructionOptions ToReconstructionOptions(const EngineSettings& settings);
 
 // A stage that ran before the input was read (the image front end of `prunesfm run IMAGES OUT`),
 // listed first in timings.json; `reused` when a previous run's result was taken as is.
@@ -80,10 +56,10 @@ struct FrontEndStageTiming {
   bool reused = false;
 };
 
-// Verifies (when the input holds putative matches), runs the engine and writes the outputs into
+// Runs the reconstruction controller (sfm_pruning::Reconstruct) and writes its outputs into
 // `output`. Throws sfm_pruning::Error (one line naming input.source) when there is no edge or
 // the engine fails. `read_seconds` is recorded in timings.json.
-void RunReconstruction(const EngineSettings& settings, const ReconstructionInput& input,
+void RunReconstruction(const EngineSettings& settings, const sfm_pruning::ReconstructionInput& input,
                        const std::filesystem::path& output, double read_seconds,
                        const std::vector<FrontEndStageTiming>& front_end = {});
 

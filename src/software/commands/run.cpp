@@ -48,7 +48,7 @@ void RunFromDatabase(const RunArguments& args) {
   }
   PrepareRunFolder(args.output, args.overwrite);
   const auto start = std::chrono::steady_clock::now();
-  ReconstructionInput input = ReadColmapInput(args.database);
+  sfm_pruning::ReconstructionInput input = sfm_pruning::ReadColmapInput(args.database);
   input.scene.root_path = args.image_path;
   RunReconstruction(args.engine, input, args.output, SecondsSince(start));
 }
@@ -113,8 +113,8 @@ void RunFromImages(const RunArguments& args, const fs::path& images, const fs::p
   features.reset();  // descriptors are not needed any more
 
   const auto start = std::chrono::steady_clock::now();
-  ReconstructionInput input =
-      ReadOpenMvgInput(sfm_path, matches_dir, matches_dir / "matches.e.bin", ProgressOnStderr());
+  sfm_pruning::ReconstructionInput input =
+      sfm_pruning::ReadOpenMvgInput(sfm_path, matches_dir, matches_dir / "matches.e.bin", ProgressOnStderr());
   // Problems of the matches are the images' (the run wrote the match file itself).
   input.source = images.string();
   RunReconstruction(args.engine, input, out, SecondsSince(start), timings);
@@ -129,7 +129,7 @@ void RunSyntheticFallback(const RunArguments& args, const fs::path& out) {
   options.seed = args.engine.seed;
   const auto start = std::chrono::steady_clock::now();
   const sfm_pruning::SyntheticScene scene = sfm_pruning::GenerateSyntheticScene(options, ProgressOnStderr());
-  ReconstructionInput input;
+  sfm_pruning::ReconstructionInput input;
   input.source = "synthetic scene 'clean'";
   input.scene.views = scene.ground_truth.views;
   input.scene.intrinsics = scene.ground_truth.intrinsics;

@@ -1,4 +1,4 @@
-#include "software/commands/reconstruction_input.hpp"
+#include "sfm_pruning/pipeline/reconstruction_input.hpp"
 
 #include "sfm_pruning/io/camera_priors.hpp"
 #include "sfm_pruning/io/colmap_database.hpp"
@@ -6,34 +6,34 @@
 #include "sfm_pruning/io/openmvg_matches.hpp"
 #include "sfm_pruning/io/openmvg_sfm_data.hpp"
 
-namespace prunesfm {
+namespace sfm_pruning {
 
-ReconstructionInput ReadOpenMvgInput(const std::filesystem::path& sfm_data, const std::filesystem::path& matches_dir,
+ReconstructionInput ReadOpenMvgInput(const std::filesystem::path& sfm_data,
+                                     const std::filesystem::path& matches_dir,
                                      const std::filesystem::path& match_file,
-                                     const sfm_pruning::ProgressCallback& progress) {
-  using sfm_pruning::SfmDataParts;
+                                     const ProgressCallback& progress) {
   ReconstructionInput input;
   input.source = sfm_data.string();
-  input.scene = sfm_pruning::ReadSfmData(sfm_data, SfmDataParts::kViews | SfmDataParts::kIntrinsics);
+  input.scene = ReadSfmData(sfm_data, SfmDataParts::kViews | SfmDataParts::kIntrinsics);
   // `prunesfm init` says beside its sfm_data.json which focal lengths are only a guess.
-  const std::filesystem::path priors = sfm_data.parent_path() / sfm_pruning::kCameraPriorsFileName;
+  const std::filesystem::path priors = sfm_data.parent_path() / kCameraPriorsFileName;
   if (std::filesystem::exists(priors)) {
-    const sfm_pruning::CameraPriors camera_priors = sfm_pruning::ReadCameraPriors(priors);
+    const CameraPriors camera_priors = ReadCameraPriors(priors);
     input.guessed_focal = camera_priors.IntrinsicsWithGuessedFocal();
     input.k_file_intrinsics = camera_priors.IntrinsicsFromKFile();
   }
-  input.features = sfm_pruning::ReadOpenMvgFeatures(input.scene, matches_dir, false, progress);
-  const std::filesystem::path matches_file = sfm_pruning::FindOpenMvgMatchesFile(matches_dir, match_file);
-  sfm_pruning::MatchReadOptions options;
+  input.features = ReadOpenMvgFeatures(input.scene, matches_dir, false, progress);
+  const std::filesystem::path matches_file = FindOpenMvgMatchesFile(matches_dir, match_file);
+  MatchReadOptions options;
   options.sfm_data = &input.scene;
   options.features = &input.features;
-  input.putative = sfm_pruning::ReadOpenMvgMatches(matches_file, options);
+  input.putative = ReadOpenMvgMatches(matches_file, options);
   input.source = matches_file.string();
   return input;
 }
 
 ReconstructionInput ReadColmapInput(const std::filesystem::path& database) {
-  sfm_pruning::ColmapDatabase colmap = sfm_pruning::ReadColmapDatabase(database);
+  ColmapDatabase colmap = ReadColmapDatabase(database);
   ReconstructionInput input;
   input.source = database.string();
   input.scene = std::move(colmap.sfm_data);
@@ -41,11 +41,11 @@ ReconstructionInput ReadColmapInput(const std::filesystem::path& database) {
   input.features = std::move(colmap.features);
   input.putative = std::move(colmap.putative);
   for (auto& [pair, geometry] : colmap.verified) {
-    sfm_pruning::VerifiedPair& verified = input.verified[pair];
+    VerifiedPair& verified = input.verified[pair];
     verified.inliers = std::move(geometry.inliers);
     verified.relative_pose = geometry.relative_pose;
   }
   return input;
 }
 
-}  // namespace prunesfm
+}  // namespace sfm_pruning

@@ -1,6 +1,6 @@
-// What `prunesfm reconstruct` and `prunesfm run` read before verification: views + intrinsics,
-// features, and either putative matches or already verified pairs, from an OpenMVG project or a
-// COLMAP database.
+// What a reconstruction (pipeline/reconstruction.hpp) reads before verification: views +
+// intrinsics, features, and either putative matches or already verified pairs, from an OpenMVG
+// project or a COLMAP database.
 #pragma once
 
 #include <filesystem>
@@ -13,30 +13,31 @@
 #include "sfm_pruning/sfm/sfm_data.hpp"
 #include "sfm_pruning/util/progress.hpp"
 
-namespace prunesfm {
+namespace sfm_pruning {
 
 struct ReconstructionInput {
   std::string source;  // the file named in error messages
-  sfm_pruning::SfmData scene;  // views and intrinsics, no poses or structure
-  sfm_pruning::FeaturesPerView features;
-  sfm_pruning::PairwiseMatches putative;  // to verify (used when `verified` is empty)
-  sfm_pruning::VerifiedPairs verified;    // COLMAP two_view_geometries
+  SfmData scene;       // views and intrinsics, no poses or structure
+  FeaturesPerView features;
+  PairwiseMatches putative;  // to verify (used when `verified` is empty)
+  VerifiedPairs verified;    // COLMAP two_view_geometries
   // Intrinsics whose focal is a guess (COLMAP's prior_focal_length = 0; `focal_trusted` false in
   // the camera_priors.json of `prunesfm init`); the others carry a focal prior (EXIF, --focal).
-  std::set<sfm_pruning::IndexT> guessed_focal;
+  std::set<IndexT> guessed_focal;
   // Intrinsics the user calibrated (`prunesfm init --k_file`): never refined by default.
-  std::set<sfm_pruning::IndexT> k_file_intrinsics;
+  std::set<IndexT> k_file_intrinsics;
 };
 
 // sfm_data.json (views + intrinsics; guessed focals from a camera_priors.json beside it), the
 // .feat files of `matches_dir` and the match file chosen
 // by FindOpenMvgMatchesFile (`match_file` when given). Matches are verified again whatever
 // OpenMVG did with them (its files carry no relative pose).
-ReconstructionInput ReadOpenMvgInput(const std::filesystem::path& sfm_data, const std::filesystem::path& matches_dir,
+ReconstructionInput ReadOpenMvgInput(const std::filesystem::path& sfm_data,
+                                     const std::filesystem::path& matches_dir,
                                      const std::filesystem::path& match_file,
-                                     const sfm_pruning::ProgressCallback& progress);
+                                     const ProgressCallback& progress);
 
 // A COLMAP database: its two_view_geometries when it has any, its matches otherwise.
 ReconstructionInput ReadColmapInput(const std::filesystem::path& database);
 
-}  // namespace prunesfm
+}  // namespace sfm_pruning
