@@ -40,19 +40,21 @@ TEST(Cli, PositioningTracksWithTranslationAveragingIsRefused) {
   }
 }
 
-TEST(Cli, ModelAuditIsOfferedOnlyWhereTheGraphIsSolved) {
-  // `prune` writes the pruned database and solves nothing: the audit would be silently ignored.
+TEST(Cli, PruneOffersTheModelAuditButNotHowTheFinalSolveStarts) {
+  // `prune` runs GLOBAL_PRUNED's pruning, the audit included; it stops there, so how the final
+  // solve starts from the audited model would be silently ignored.
+  const CommandResult prune_help = RunPrunesfm({"prune", "--help"});
+  EXPECT_EQ(prune_help.exit_code, 0);
+  EXPECT_NE(prune_help.out.find("--prune_model_audit"), std::string::npos);
+  EXPECT_NE(prune_help.out.find("--prune_unverified_max_rotation_deg"), std::string::npos);
   const CommandResult prune = RunPrunesfm({"prune", "--database", "/nonexistent/database.db", "--output", "/tmp/x.db",
-                                           "--prune_model_audit", "true"});
+                                           "--prune_audit_refine_final", "true"});
   EXPECT_NE(prune.exit_code, 0);
-  EXPECT_NE(prune.err.find("--prune_model_audit"), std::string::npos) << prune.err;
+  EXPECT_NE(prune.err.find("--prune_audit_refine_final"), std::string::npos) << prune.err;
   const CommandResult run = RunPrunesfm({"run", "--help"});
   EXPECT_EQ(run.exit_code, 0);
   EXPECT_NE(run.out.find("--prune_model_audit"), std::string::npos);
-  // The rotation check of unverified pairs is part of the pruning itself, so `prune` offers it too.
-  const CommandResult prune_help = RunPrunesfm({"prune", "--help"});
-  EXPECT_NE(prune_help.out.find("--prune_unverified_max_rotation_deg"), std::string::npos);
-  EXPECT_NE(run.out.find("--prune_unverified_max_rotation_deg"), std::string::npos);
+  EXPECT_NE(run.out.find("--prune_audit_refine_final"), std::string::npos);
 }
 
 TEST(Cli, OutOfRangeNumbersSayWhatIsExpectedInOneLine) {

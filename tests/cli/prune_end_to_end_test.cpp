@@ -1,7 +1,9 @@
 // prunesfm prune end to end on a 20-view symmetric orbit (the front and back of the object look
 // alike, so about a third of the pairs match twin copies): the pruned COLMAP database lacks
-// exactly the pairs the report removes and nothing else changes; the OpenMVG match file likewise;
-// the same seed gives the same bytes; the removed pairs are mostly the spurious ones.
+// exactly the pairs the report removes, its kept pairs lose only the matches the landmark check
+// dropped, and nothing else changes; the OpenMVG match file likewise; the same seed gives the same
+// bytes; the removed pairs are mostly the spurious ones, and they are the pairs GLOBAL_PRUNED
+// removes from the same database.
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -76,7 +78,7 @@ std::string FileBytes(const fs::path& path) {
   return std::string(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>());
 }
 
-TEST(CliPruneEndToEnd, DatabaseLosesExactlyTheRemovedPairsAndRunsAreReproducible) {
+TEST(CliPruneEndToEnd, DatabaseLosesExactlyWhatGlobalPrunedRemovesAndRunsAreReproducible) {
   const fs::path scratch = ScratchDir("cli_prune_database");
   const fs::path input = OrbitProject() / "verified.db";
   for (const char* name : {"a.db", "b.db"}) {
@@ -93,15 +95,27 @@ TEST(CliPruneEndToEnd, DatabaseLosesExactlyTheRemovedPairsAndRunsAreReproducible
   const ColmapDatabase after = ReadColmapDatabase(scratch / "a.db");
   ASSERT_FALSE(removed.empty());
   EXPECT_EQ(after.verified.size(), before.verified.size() - removed.size());
+  size_t dropped = 0;
   for (const auto& [pair, geometry] : before.verified) {
     const auto it = after.verified.find(pair);
     if (removed.count(pair) != 0) {
       EXPECT_EQ(it, after.verified.end()) << pair.first << "-" << pair.second;
     } else {
       ASSERT_NE(it, after.verified.end()) << pair.first << "-" << pair.second;
-      EXPECT_EQ(it->second.inliers.size(), geometry.inliers.size());
+      // A kept pair keeps its inliers but those the landmark check dropped, in their order.
+      ASSERT_LE(it->second.inliers.size(), geometry.inliers.size());
+      dropped += geometry.inliers.size() - it->second.inliers.size();
+      auto next = geometry.inliers.begin();
+      for (const FeatureMatch& match : it->second.inliers) {
+        next = std::find_if(next, geometry.inliers.end(),
+                            [&](const FeatureMatch& m) { return m.i == match.i && m.j == match.j; });
+        ASSERT_NE(next, geometry.inliers.end()) << pair.first << "-" << pair.second;
+      }
     }
   }
+  const nlohmann::json report = nlohmann::json::parse(std::ifstream(scratch / "a.pruning_report.json"));
+  EXPECT_EQ(report.at("filter").at("matches_dropped").get<size_t>(), dropped);
+  EXPECT_GT(dropped, 0u);  // twin matches inside true pairs
   // The matches, features and images are copied as they are.
   EXPECT_EQ(after.putative.size(), before.putative.size());
   EXPECT_EQ(after.sfm_data.views.size(), before.sfm_data.views.size());
@@ -115,14 +129,29 @@ TEST(CliPruneEndToEnd, DatabaseLosesExactlyTheRemovedPairsAndRunsAreReproducible
   EXPECT_GE(static_cast<double>(hits) / static_cast<double>(removed.size()), 0.5)
       << hits << " of " << removed.size() << " removed pairs are spurious (share of all pairs " << spurious_share
       << ")";
+
+  // The same pruning as GLOBAL_PRUNED's on the same database and seed (its view_graph.json).
+  const CommandResult run =
+      RunPrunesfm({"run", "--database", input.string(), "--image_path", (scratch / "no_images").string(),
+                   "--output_path", (scratch / "run").string(), "--engine", "GLOBAL_PRUNED", "--seed", "5"});
+  ASSERT_EQ(run.exit_code, 0) << run.err;
+  const nlohmann::json graph = nlohmann::json::parse(std::ifstream(scratch / "run" / "view_graph.json"));
+  std::set<ViewPair> removed_by_engine;
+  for (const nlohmann::json& edge : graph.at("edges")) {
+    if (edge.at("removed").get<bool>()) {
+      removed_by_engine.insert(MakeViewPair(edge.at("i").get<IndexT>(), edge.at("j").get<IndexT>()));
+    }
+  }
+  EXPECT_EQ(removed, removed_by_engine);
 }
 
-// `prunesfm prune` of the orbit project's verified database with `extra_args`; its pruning report
-// (empty, with a test failure, when the command fails).
+// `prunesfm prune` of the orbit project's verified database with `extra_args`, without the model
+// audit (these tests read the partition's records, which the audit's solve does not change); its
+// pruning report (empty, with a test failure, when the command fails).
 nlohmann::json PruneOrbitReport(const std::string& scratch_name, const std::vector<std::string>& extra_args) {
   const fs::path scratch = ScratchDir(scratch_name);
   std::vector<std::string> args = {"prune", "--database", (OrbitProject() / "verified.db").string(), "--output",
-                                   (scratch / "pruned.db").string()};
+                                   (scratch / "pruned.db").string(), "--prune_model_audit", "false"};
   args.insert(args.end(), extra_args.begin(), extra_args.end());
   const CommandResult result = RunPrunesfm(args);
   EXPECT_EQ(result.exit_code, 0) << result.err;
@@ -178,7 +207,7 @@ TEST(CliPruneEndToEnd, ReportListsBaselineRatioViolationsAsFactorsOverThreeViews
   EXPECT_GT(listed, 0u);
 }
 
-TEST(CliPruneEndToEnd, OpenMvgMatchFileLosesExactlyTheRemovedPairs) {
+TEST(CliPruneEndToEnd, OpenMvgMatchFileLosesExactlyTheRemovedPairsAndDroppedMatches) {
   const fs::path scratch = ScratchDir("cli_prune_openmvg");
   const fs::path output = scratch / "matches.pruned.txt";
   const fs::path report = scratch / "report.json";
@@ -191,10 +220,13 @@ TEST(CliPruneEndToEnd, OpenMvgMatchFileLosesExactlyTheRemovedPairs) {
   const PairwiseMatches after = ReadOpenMvgMatches(output);
   ASSERT_FALSE(removed.empty());
   EXPECT_EQ(after.size(), before.size() - removed.size());
+  size_t dropped = 0;
   for (const auto& [pair, matches] : after) {
     EXPECT_EQ(removed.count(pair), 0u);
-    EXPECT_EQ(matches.size(), before.at(pair).size());
+    ASSERT_LE(matches.size(), before.at(pair).size());
+    dropped += before.at(pair).size() - matches.size();
   }
+  EXPECT_EQ(nlohmann::json::parse(std::ifstream(report)).at("filter").at("matches_dropped").get<size_t>(), dropped);
 }
 
 }  // namespace

@@ -76,9 +76,11 @@ ColmapDatabase ReadColmapDatabase(const std::filesystem::path& path);
 void WriteColmapDatabase(const ColmapDatabase& database, const std::filesystem::path& path);
 
 // Copies database `input` to `output` (atomically; they may be the same file) with only the
-// two_view_geometries rows of the pairs in `keep`. Everything else is copied byte for byte,
-// whatever the schema version.
+// two_view_geometries rows of the pairs in `keep`, and without the inliers `drop` lists for a
+// pair (FeatureMatch i of the pair's first image, j of its second; inliers not in the row are
+// ignored). Everything else is copied byte for byte, whatever the schema version.
 void CopyColmapDatabaseKeepingPairs(const std::filesystem::path& input, const std::filesystem::path& output,
-                                    const std::set<ViewPair>& keep);
+                                    const std::set<ViewPair>& keep,
+                                    const std::map<ViewPair, std::vector<FeatureMatch>>& drop = {});
 
 }  // namespace sfm_pruning

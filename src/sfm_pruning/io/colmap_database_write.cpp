@@ -2,6 +2,8 @@
 // two-view geometries. Both are built in memory and written with WriteFileAtomically, so no
 // reader ever sees a half-written database.
 #include <Eigen/Geometry>
+#include <cstring>
+#include <set>
 #include <string>
 
 #include "sfm_pruning/io/colmap_camera.hpp"
@@ -188,8 +190,43 @@ void WriteColmapDatabase(const ColmapDatabase& database, const fs::path& path) {
   WriteBytes(path, db.Serialize());
 }
 
-void CopyColmapDatabaseKeepingPairs(const fs::path& input, const fs::path& output,
-                                    const std::set<ViewPair>& keep) {
+namespace {
+
+// Rewrites the inlier blob of two_view_geometries row `pair_id` without the matches of `drop`.
+void DropInliers(Connection& db, int64_t pair_id, const std::vector<FeatureMatch>& drop) {
+  std::set<std::pair<uint32_t, uint32_t>> dropped;
+  for (const FeatureMatch& match : drop) dropped.emplace(match.i, match.j);
+  std::string data;
+  int64_t rows = 0, cols = 0;
+  {
+    Statement row = db.Prepare("SELECT rows, cols, data FROM two_view_geometries WHERE pair_id = ?");
+    row.BindInt64(1, pair_id);
+    if (!row.Step()) return;
+    rows = row.ColumnInt64(0);
+    cols = row.ColumnInt64(1);
+    data = row.ColumnBlob(2);
+  }
+  if (cols != 2 || data.size() != static_cast<size_t>(rows) * 2 * sizeof(uint32_t)) {
+    throw FileError(db.source(), "two_view_geometries row " + std::to_string(pair_id) + " is not rows x 2 uint32");
+  }
+  std::vector<uint32_t> values(2 * static_cast<size_t>(rows));
+  std::memcpy(values.data(), data.data(), data.size());
+  std::vector<uint32_t> kept;
+  for (size_t k = 0; k + 1 < values.size(); k += 2) {
+    if (dropped.count({values[k], values[k + 1]}) == 0) kept.insert(kept.end(), {values[k], values[k + 1]});
+  }
+  Statement update = db.Prepare("UPDATE two_view_geometries SET rows = ?, data = ? WHERE pair_id = ?");
+  update.BindInt64(1, static_cast<int64_t>(kept.size() / 2));
+  static const uint32_t kNoInlier = 0;  // a zero-length blob, not NULL, when every inlier goes
+  update.BindBlob(2, kept.empty() ? &kNoInlier : kept.data(), kept.size() * sizeof(uint32_t));
+  update.BindInt64(3, pair_id);
+  update.Run();
+}
+
+}  // namespace
+
+void CopyColmapDatabaseKeepingPairs(const fs::path& input, const fs::path& output, const std::set<ViewPair>& keep,
+                                    const std::map<ViewPair, std::vector<FeatureMatch>>& drop) {
   Connection db = Connection::InMemoryCopyOf(input.string());
   colmap_sqlite::RequireColmapTables(db);
   std::vector<int64_t> dropped;
@@ -205,6 +242,11 @@ void CopyColmapDatabaseKeepingPairs(const fs::path& input, const fs::path& outpu
   for (int64_t pair_id : dropped) {
     remove.BindInt64(1, pair_id);
     remove.Run();
+  }
+  for (const auto& [pair, matches] : drop) {
+    if (keep.count(pair) != 0 && !matches.empty()) {
+      DropInliers(db, static_cast<int64_t>(ColmapPairId(pair.first, pair.second)), matches);
+    }
   }
   db.Execute("COMMIT");
   WriteBytes(output, db.Serialize());

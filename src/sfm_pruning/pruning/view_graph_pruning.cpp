@@ -414,28 +414,40 @@ GlobalEngineOptions AuditModelOptions(const GlobalEngineOptions& final_solve, Au
 
 }  // namespace
 
+PrunedGlobalEngineStep PruneAndAudit(const PrunedGlobalEngineOptions& options, const ViewGraph& graph,
+                                     const SfmData& views_and_intrinsics, const FeaturesPerView& features,
+                                     ViewGraph* pruned, SfmData* model, PrunedGlobalEngineReport* report,
+                                     const ProgressCallback& progress) {
+  *report = PrunedGlobalEngineReport();
+  *pruned = graph;
+  PruneViewGraph(options.pruning, pruned, views_and_intrinsics, features, &report->pruning, progress);
+  if (!options.pruning.audit.enabled) return PrunedGlobalEngineStep::kPruned;
+  RunGlobalEngine(AuditModelOptions(options.engine, options.pruning.audit.model_schedule), *pruned,
+                  views_and_intrinsics, features, model, &report->engine, progress);
+  if (!report->engine.success) return PrunedGlobalEngineStep::kAuditModelFailed;
+
+  const auto start = std::chrono::steady_clock::now();
+  report->pruning.audit = AuditEdgesAgainstModel(graph, InterSubgraphEdges(graph, report->pruning.partition.accepted),
+                                                 *model, features, options.pruning.audit);
+  const bool changed = ApplyAudit(options.pruning.audit, pruned, report);
+  report->pruning.timings.push_back({"solve before the audit", report->engine.total_seconds});
+  report->pruning.timings.push_back({"model audit", SecondsSince(start)});
+  return changed ? PrunedGlobalEngineStep::kAuditedWithChanges : PrunedGlobalEngineStep::kAudited;
+}
+
 void RunPrunedGlobalEngine(const PrunedGlobalEngineOptions& options, const ViewGraph& graph,
                            const SfmData& views_and_intrinsics, const FeaturesPerView& features, SfmData* out,
                            PrunedGlobalEngineReport* report, const ProgressCallback& progress) {
   PrunedGlobalEngineReport local;
   PrunedGlobalEngineReport& result = report != nullptr ? *report : local;
-  result = PrunedGlobalEngineReport();
-  ViewGraph pruned = graph;
-  PruneViewGraph(options.pruning, &pruned, views_and_intrinsics, features, &result.pruning, progress);
-  if (!options.pruning.audit.enabled) {
+  ViewGraph pruned;
+  const PrunedGlobalEngineStep step =
+      PruneAndAudit(options, graph, views_and_intrinsics, features, &pruned, out, &result, progress);
+  if (step == PrunedGlobalEngineStep::kPruned) {
     RunGlobalEngine(options.engine, pruned, views_and_intrinsics, features, out, &result.engine, progress);
     return;
   }
-  RunGlobalEngine(AuditModelOptions(options.engine, options.pruning.audit.model_schedule), pruned,
-                  views_and_intrinsics, features, out, &result.engine, progress);
-  if (!result.engine.success) return;
-
-  const auto start = std::chrono::steady_clock::now();
-  result.pruning.audit = AuditEdgesAgainstModel(graph, InterSubgraphEdges(graph, result.pruning.partition.accepted), *out,
-                                        features, options.pruning.audit);
-  const bool changed = ApplyAudit(options.pruning.audit, &pruned, &result);
-  result.pruning.timings.push_back({"solve before the audit", result.engine.total_seconds});
-  result.pruning.timings.push_back({"model audit", SecondsSince(start)});
+  if (step == PrunedGlobalEngineStep::kAuditModelFailed) return;
   if (options.pruning.audit.refine_final) {
     // An adjusted audit model has had the first of the final solve's adjustment rounds.
     GlobalEngineOptions refine = options.engine;
@@ -444,7 +456,8 @@ void RunPrunedGlobalEngine(const PrunedGlobalEngineOptions& options, const ViewG
     }
     const SfmData audited = std::move(*out);  // RefineGlobalModel resets *out from it
     RefineGlobalModel(refine, pruned, audited, features, out, &result.engine, progress);
-  } else if (changed || options.pruning.audit.model_schedule != AuditModelSchedule::kFull) {
+  } else if (step == PrunedGlobalEngineStep::kAuditedWithChanges ||
+             options.pruning.audit.model_schedule != AuditModelSchedule::kFull) {
     RunGlobalEngine(options.engine, pruned, views_and_intrinsics, features, out, &result.engine, progress);
   }
 }

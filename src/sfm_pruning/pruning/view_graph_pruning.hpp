@@ -164,7 +164,25 @@ struct PrunedGlobalEngineReport {
   GlobalEngineReport engine;       // the last solve
 };
 
-// GLOBAL_PRUNED. `graph` is copied, not modified. Same output contract as RunGlobalEngine.
+// How far PruneAndAudit went.
+enum class PrunedGlobalEngineStep {
+  kPruned,              // PruneViewGraph only (the audit is off)
+  kAuditModelFailed,    // the solve of the pruned graph failed (report->engine says why): no audit
+  kAudited,             // audited, no edge changed: *model is the audit's model of *pruned
+  kAuditedWithChanges,  // audited, edges re-admitted or removed: *model predates them
+};
+
+// GLOBAL_PRUNED's whole pruning, the part `prunesfm prune` shares with the engine: PruneViewGraph
+// on a copy of `graph` into *pruned, then, when the audit is on, the solve of the pruned graph
+// into *model and the audit of the removed and kept edges against it (ModelEdgeAuditOptions).
+PrunedGlobalEngineStep PruneAndAudit(const PrunedGlobalEngineOptions& options, const ViewGraph& graph,
+                                     const SfmData& views_and_intrinsics, const FeaturesPerView& features,
+                                     ViewGraph* pruned, SfmData* model, PrunedGlobalEngineReport* report,
+                                     const ProgressCallback& progress = {});
+
+// GLOBAL_PRUNED: PruneAndAudit, then the final solve of the pruned graph (the audit's model
+// refined, or solved again when the audit changed edges). `graph` is copied, not modified. Same
+// output contract as RunGlobalEngine.
 void RunPrunedGlobalEngine(const PrunedGlobalEngineOptions& options, const ViewGraph& graph,
                            const SfmData& views_and_intrinsics, const FeaturesPerView& features, SfmData* out,
                            PrunedGlobalEngineReport* report, const ProgressCallback& progress = {});

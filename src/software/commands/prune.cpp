@@ -1,19 +1,24 @@
 // prunesfm prune: the view-graph pruning of GLOBAL_PRUNED as a filter for other tools. It builds
-// the verified view graph of the input, prunes it (PruneViewGraph), and writes the input again
-// without the removed pairs, so COLMAP's or GLOMAP's mapper (or OpenMVG's) runs on a cleaned
-// graph:
+// the verified view graph of the input, prunes it exactly as GLOBAL_PRUNED does (PruneAndAudit:
+// the partition and votes, the landmark check's match removals, the model audit against a solve
+// of the pruned graph), and writes the input again without what the pruning removed, so COLMAP's
+// or GLOMAP's mapper (or OpenMVG's) runs on a cleaned graph:
 //   --database DB --output DB2: a copy of the COLMAP database whose two_view_geometries rows of
-//       the removed pairs are deleted (everything else byte for byte, the matches table too:
-//       the mappers build their correspondence graph from two_view_geometries only);
-//   --sfm_data S --matches_dir D --output M: the OpenMVG match file without the removed pairs.
+//       the removed pairs are deleted and whose kept rows lose the inliers the landmark check
+//       dropped (everything else byte for byte, the matches table too: the mappers build their
+//       correspondence graph from two_view_geometries only);
+//   --sfm_data S --matches_dir D --output M: the OpenMVG match file without the removed pairs
+//       and the dropped matches.
 // Cameras with a guessed focal are calibrated on the view graph first (as `run` does by default).
 // Only the edges the pruning removes are dropped; pairs our verification rejects are kept (the
 // input tool accepted them and may judge them differently). Plus the pruning report (JSON).
 #include <CLI/CLI.hpp>
 
 #include <chrono>
+#include <map>
 #include <memory>
 #include <set>
+#include <vector>
 
 #include "sfm_pruning/io/colmap_database.hpp"
 #include "sfm_pruning/io/openmvg_matches.hpp"
@@ -52,6 +57,60 @@ class StageClock {
  private:
   std::chrono::steady_clock::time_point last_ = std::chrono::steady_clock::now();
 };
+
+// What the pruning changed in the verified graph: the edges it removed, and the matches the
+// landmark check took out of the edges it kept.
+struct PrunedPairs {
+  std::set<ViewPair> removed;
+  std::map<ViewPair, std::vector<sfm_pruning::FeatureMatch>> dropped_matches;
+};
+
+PrunedPairs ChangesOfPruning(const sfm_pruning::ViewGraph& verified, const sfm_pruning::ViewGraph& pruned) {
+  PrunedPairs changes;
+  for (const auto& [pair, edge] : verified.Edges()) {
+    if (!edge.is_valid) continue;
+    const sfm_pruning::ViewGraphEdge* after = pruned.FindEdge(pair.first, pair.second);
+    if (after == nullptr || !after->is_valid) {
+      changes.removed.insert(pair);
+      continue;
+    }
+    std::set<std::pair<sfm_pruning::IndexT, sfm_pruning::IndexT>> kept;
+    for (const sfm_pruning::FeatureMatch& match : after->matches) kept.emplace(match.i, match.j);
+    std::vector<sfm_pruning::FeatureMatch> dropped;
+    for (const sfm_pruning::FeatureMatch& match : edge.matches) {
+      if (kept.count({match.i, match.j}) == 0) dropped.push_back(match);
+    }
+    if (!dropped.empty()) changes.dropped_matches.emplace(pair, std::move(dropped));
+  }
+  return changes;
+}
+
+size_t NumMatches(const std::map<ViewPair, std::vector<sfm_pruning::FeatureMatch>>& matches) {
+  size_t count = 0;
+  for (const auto& [pair, list] : matches) count += list.size();
+  return count;
+}
+
+// The putative matches of the kept pairs, without the dropped ones.
+sfm_pruning::PairwiseMatches KeptMatches(const sfm_pruning::PairwiseMatches& putative, const std::set<ViewPair>& keep,
+                                         const std::map<ViewPair, std::vector<sfm_pruning::FeatureMatch>>& dropped) {
+  sfm_pruning::PairwiseMatches kept;
+  for (const auto& [pair, matches] : putative) {
+    if (keep.count(pair) == 0) continue;
+    const auto drop = dropped.find(pair);
+    if (drop == dropped.end()) {
+      kept.emplace(pair, matches);
+      continue;
+    }
+    std::set<std::pair<sfm_pruning::IndexT, sfm_pruning::IndexT>> gone;
+    for (const sfm_pruning::FeatureMatch& match : drop->second) gone.emplace(match.i, match.j);
+    std::vector<sfm_pruning::FeatureMatch>& out = kept[pair];
+    for (const sfm_pruning::FeatureMatch& match : matches) {
+      if (gone.count({match.i, match.j}) == 0) out.push_back(match);
+    }
+  }
+  return kept;
+}
 
 // Every pair the input holds (verified or only matched), minus the removed ones.
 std::set<ViewPair> PairsToKeep(const sfm_pruning::ReconstructionInput& input,
@@ -111,26 +170,33 @@ void RunPrune(const PruneArguments& args) {
   Info("view graph: " + std::to_string(graph.NumValidEdges()) + " edges of " + std::to_string(build.num_pairs) +
        " pairs, " + std::to_string(graph.NumNodes()) + " views");
 
-  sfm_pruning::ViewGraphPruningReport pruning;
-  PruneViewGraph(sfm_pruning::PrunedEngineOptions(options).pruning, &graph, scene, input.features, &pruning,
-                 ProgressOnStderr());
+  // GLOBAL_PRUNED's pruning, all of it: the view-graph pruning with its landmark check and, unless
+  // --prune_model_audit false, the audit against a solve of the pruned graph.
+  sfm_pruning::ViewGraph pruned;
+  sfm_pruning::SfmData audit_model;
+  sfm_pruning::PrunedGlobalEngineReport engine_report;
+  sfm_pruning::PrunedGlobalEngineOptions engine_options = sfm_pruning::PrunedEngineOptions(options);
+  // The audit's solve adjusts the intrinsics as GLOBAL_PRUNED's does.
+  engine_options.engine.bundle = sfm_pruning::RefiningBundleOptions(
+      options.intrinsics, input, sfm_pruning::RefinedIntrinsics(options.intrinsics, input));
+  const sfm_pruning::PrunedGlobalEngineStep step = PruneAndAudit(engine_options, graph, scene, input.features, &pruned,
+                                                                 &audit_model, &engine_report, ProgressOnStderr());
+  if (step == sfm_pruning::PrunedGlobalEngineStep::kAuditModelFailed) {
+    Info("model audit skipped: the solve of the pruned graph failed (" + engine_report.engine.message + ")");
+  }
+  const sfm_pruning::ViewGraphPruningReport& pruning = engine_report.pruning;
   const double prune_seconds = clock.Lap();
   Info("pruning: " + PruningSummary(pruning));
 
-  std::set<ViewPair> removed;
-  for (const sfm_pruning::RemovedEdge& edge : pruning.removed_edges) removed.insert(edge.pair);
-  const std::set<ViewPair> keep = PairsToKeep(input, removed);
+  const PrunedPairs changes = ChangesOfPruning(graph, pruned);
+  const std::set<ViewPair> keep = PairsToKeep(input, changes.removed);
   size_t num_pairs = 0;
   if (colmap) {
     num_pairs = input.verified.size();
-    sfm_pruning::CopyColmapDatabaseKeepingPairs(args.database, output, keep);
+    sfm_pruning::CopyColmapDatabaseKeepingPairs(args.database, output, keep, changes.dropped_matches);
   } else {
     num_pairs = input.putative.size();
-    sfm_pruning::PairwiseMatches kept;
-    for (const auto& [pair, matches] : input.putative) {
-      if (keep.count(pair) != 0) kept.emplace(pair, matches);
-    }
-    sfm_pruning::WriteOpenMvgMatches(output, kept);
+    sfm_pruning::WriteOpenMvgMatches(output, KeptMatches(input.putative, keep, changes.dropped_matches));
   }
   const double write_seconds = clock.Lap();
 
@@ -139,7 +205,9 @@ void RunPrune(const PruneArguments& args) {
                       {"output", output.string()},
                       {"format", colmap ? "colmap_database" : "openmvg_matches"},
                       {"input_pairs", num_pairs},
-                      {"removed_pairs", removed.size()},
+                      {"removed_pairs", changes.removed.size()},
+                      {"pairs_with_matches_dropped", changes.dropped_matches.size()},
+                      {"matches_dropped", NumMatches(changes.dropped_matches)},
                       {"rejected_by_verification_kept", build.rejected_pairs.size()},
                       {"seed", args.settings.seed},
                       {"num_threads", args.settings.num_threads},
@@ -151,7 +219,7 @@ void RunPrune(const PruneArguments& args) {
                         {"write output", write_seconds}}}};
   if (!calibration.is_null()) report["filter"]["focal_calibration"] = std::move(calibration);
   WriteJsonAtomically(report, report_path);
-  Info("wrote " + output.string() + " (" + std::to_string(num_pairs - removed.size()) + " of " +
+  Info("wrote " + output.string() + " (" + std::to_string(num_pairs - changes.removed.size()) + " of " +
        std::to_string(num_pairs) + " pairs kept) and " + report_path.string());
 }
 
@@ -160,11 +228,12 @@ void RunPrune(const PruneArguments& args) {
 void AddPruneCommand(CLI::App& app) {
   auto* cmd = app.add_subcommand(
       "prune",
-      "Remove spurious two-view geometries (GLOBAL_PRUNED's view-graph pruning) for another mapper.\n"
-      "COLMAP: --database DB --output DB2 writes a copy of DB without the removed pairs'\n"
-      "two_view_geometries (run 'colmap mapper' or 'glomap mapper' on DB2). OpenMVG: --sfm_data +\n"
-      "--matches_dir --output MATCHES(.bin|.txt) writes the match file without them. Also writes\n"
-      "the pruning report (JSON; default: OUTPUT with the extension .pruning_report.json).");
+      "Remove spurious two-view geometries (GLOBAL_PRUNED's view-graph pruning, model audit included)\n"
+      "for another mapper. COLMAP: --database DB --output DB2 writes a copy of DB without the removed\n"
+      "pairs' two_view_geometries and without the inliers the pruning's landmark check dropped (run\n"
+      "'colmap mapper' or 'glomap mapper' on DB2). OpenMVG: --sfm_data + --matches_dir --output\n"
+      "MATCHES(.bin|.txt) writes the match file without them. Also writes the pruning report (JSON;\n"
+      "default: OUTPUT with the extension .pruning_report.json).");
   auto args = std::make_shared<PruneArguments>();
   cmd->add_option("--database_path,--database", args->database, "COLMAP database.db with two-view geometries");
   cmd->add_option("--sfm_data", args->sfm_data, "OpenMVG sfm_data.json/.bin with views and intrinsics");

@@ -150,40 +150,39 @@ void AddPruningOptions(CLI::App* cmd, sfm_pruning::ViewGraphPruningOptions* opti
       ->capture_default_str();
 
   // The model's audit of the pruning (not in the paper; docs/pruning.md).
-  if (final_solve) {
-    sfm_pruning::ModelEdgeAuditOptions& audit = options->audit;
-    group->add_option("--prune_model_audit", audit.enabled,
-                      "GLOBAL_PRUNED: judge the edges between subgraphs against the model solved from the pruned "
-                      "graph (re-admit removed edges whose matches it transfers, remove kept ones it does not), "
-                      "then adjust the audited graph from that model")
-        ->capture_default_str();
-    group->add_option("--prune_audit_model", audit.model_schedule,
-                      "Model audit: the solve it judges from. positioned: rotation averaging and positioning; "
-                      "adjusted: + one bundle adjustment on a subset of the landmarks; full: the final solve's "
-                      "schedule")
-        ->transform(CLI::CheckedTransformer(
-AuditModelNames(), CLI::ignore_case))
-        ->default_str("adjusted");
+  sfm_pruning::ModelEdgeAuditOptions& audit = options->audit;
+  group->add_option("--prune_model_audit", audit.enabled,
+                    "GLOBAL_PRUNED: judge the edges between subgraphs against the model solved from the pruned "
+                    "graph (re-admit removed edges whose matches it transfers, remove kept ones it does not), "
+                    "then adjust the audited graph from that model")
+      ->capture_default_str();
+  group->add_option("--prune_audit_model", audit.model_schedule,
+                    "Model audit: the solve it judges from. positioned: rotation averaging and positioning; "
+                    "adjusted: + one bundle adjustment on a subset of the landmarks; full: the final solve's "
+                    "schedule")
+      ->transform(CLI::CheckedTransformer(AuditModelNames(), CLI::ignore_case))
+      ->default_str("adjusted");
+  if (final_solve) {  // `prune` stops after the audit: there is no final solve to start
     group->add_option("--prune_audit_refine_final", audit.refine_final,
                       "Model audit: the final solve starts from the audited model's poses (its tracks "
                       "re-triangulated, then adjusted) instead of solving the audited graph from scratch")
         ->capture_default_str();
-    group->add_option("--prune_audit_max_error_px", audit.max_transfer_error_px,
-                      "Model audit: a match agrees when its landmark projects within this many pixels of the other "
-                      "feature")
-        ->check(PositiveValue())
-        ->capture_default_str();
-    group->add_option("--prune_audit_readmit_agreement", audit.readmit_agreement,
-                      "Model audit: a removed edge is re-admitted when at least this share of its transferred "
-                      "matches agree")
-        ->check(RangeValue(0.0, 1.0))
-        ->capture_default_str();
-    group->add_option("--prune_audit_keep_agreement", audit.keep_agreement,
-                      "Model audit: a kept edge is removed when less than this share of its transferred matches "
-                      "agree")
-        ->check(RangeValue(0.0, 1.0))
-        ->capture_default_str();
   }
+  group->add_option("--prune_audit_max_error_px", audit.max_transfer_error_px,
+                    "Model audit: a match agrees when its landmark projects within this many pixels of the other "
+                    "feature")
+      ->check(PositiveValue())
+      ->capture_default_str();
+  group->add_option("--prune_audit_readmit_agreement", audit.readmit_agreement,
+                    "Model audit: a removed edge is re-admitted when at least this share of its transferred "
+                    "matches agree")
+      ->check(RangeValue(0.0, 1.0))
+      ->capture_default_str();
+  group->add_option("--prune_audit_keep_agreement", audit.keep_agreement,
+                    "Model audit: a kept edge is removed when less than this share of its transferred matches "
+                    "agree")
+      ->check(RangeValue(0.0, 1.0))
+      ->capture_default_str();
 
   // Loops of subgraph pairs (not in the paper; docs/pruning.md).
   sfm_pruning::SubgraphLoopOptions& loops = options->loops;

@@ -14,8 +14,8 @@ class App;
 namespace prunesfm {
 
 // Adds the pruning options to `cmd` (in an option group "Pruning"), bound to `options`.
-// `final_solve`: the subcommand solves the pruned graph (run, reconstruct), so the options of the
-// model audit apply; `prune` only writes the pruned database and does not offer them.
+// `final_solve`: the subcommand solves the pruned graph to the end (run, reconstruct), so the
+// option of how that solve starts from the audit's model applies; `prune` stops after the audit.
 void AddPruningOptions(CLI::App* cmd, sfm_pruning::ViewGraphPruningOptions* options, bool final_solve);
 
 // The --prune_audit_model name of a schedule (for the run's record of its settings).
