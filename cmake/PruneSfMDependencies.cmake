@@ -7,7 +7,6 @@ find_package(flann REQUIRED CONFIG)                         # flann::flann_cpp (
 find_package(cereal REQUIRED)                               # cereal::cereal
 find_package(igraph 0.10 REQUIRED)                          # igraph::igraph
 find_package(SQLite3 REQUIRED)                              # SQLite::SQLite3
-find_package(TBB REQUIRED)                                  # TBB::tbb
 find_package(CLI11 REQUIRED)                                # CLI11::CLI11
 find_package(nlohmann_json 3 REQUIRED)                      # nlohmann_json::nlohmann_json
 # BLAS by its generic name (-lblas = libblas.so.3), not a vendor's library: Debian's alternatives

@@ -8,7 +8,7 @@ packages=(
   libeigen3-dev libceres-dev libopencv-dev libopengv-dev libflann-dev libcereal-dev
   libgtest-dev libgmock-dev
   libigraph-dev libarpack2-dev libglpk-dev libplfit-dev libgmp-dev
-  libsqlite3-dev libcli11-dev nlohmann-json3-dev libtbb-dev libexif-dev
+  libsqlite3-dev libcli11-dev nlohmann-json3-dev libexif-dev
   sqlite3 python3
   libblas-dev libopenblas0-serial  # the BLAS behind libblas.so.3 (alternatives): brute-force matching and CHOLMOD, docs/dependencies.md
   chromium  # headless browser of the report's page test (tests/report/browser_test.cpp)
