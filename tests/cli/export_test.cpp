@@ -92,6 +92,10 @@ TEST(CliExport, BadInputGivesOneLineErrors) {
   data.root_path.clear();
   WriteSfmData(data, dir / "no_root.json");
   expect_error(Export(dir / "no_root.json", "openmvs", dir / "mvs"), "needs the images; give --images");
+  // A PLY of a model without images (a synthetic one) keeps the model's colours.
+  const CommandResult ply = Export(dir / "no_root.json", "ply", dir / "no_images.ply");
+  EXPECT_EQ(ply.exit_code, 0) << ply.err;
+  EXPECT_EQ(ReadPlyPoints(dir / "no_images.ply").structure.size(), data.structure.size());
   expect_error(Export(dir / "missing.json", "ply", dir / "p.ply"), (dir / "missing.json").string());
 }
 

@@ -1,9 +1,14 @@
-// prunesfm prune: the one-line errors (fast; the end-to-end runs are in prune_end_to_end_test.cpp).
+// prunesfm prune: the one-line errors and a database of matches only (fast; the end-to-end runs on
+// a twin scene are in prune_end_to_end_test.cpp).
 #include <gtest/gtest.h>
 
 #include <filesystem>
+#include <fstream>
+
+#include <nlohmann/json.hpp>
 
 #include "run_prunesfm.hpp"
+#include "sfm_pruning/io/colmap_database.hpp"
 #include "support/test_data.hpp"
 
 namespace sfm_pruning::testing {
@@ -37,14 +42,30 @@ TEST(CliPrune, MissingDatabaseIsOneLine) {
   EXPECT_FALSE(fs::exists(scratch / "pruned.db"));
 }
 
-TEST(CliPrune, DatabaseWithoutTwoViewGeometriesIsRefused) {
+TEST(CliPrune, DatabaseOfMatchesOnlyGetsItsPairsVerifiedHere) {
+  // No other tool verified the matches: prune verifies them as `run` does and writes the kept
+  // pairs' two-view geometries (inliers, E, pose), the rest of the database as it was.
   const fs::path scratch = ScratchDir("cli_prune_unverified");
   const fs::path database = SmallProject() / "database.db";
-  ExpectOneLineError(RunPrunesfm({"prune", "--database", database.string(), "--output",
-                                  (scratch / "pruned.db").string()}),
-                     database.string() + ": no two-view geometries");
-  EXPECT_FALSE(fs::exists(scratch / "pruned.db"));
-  EXPECT_FALSE(fs::exists(scratch / "pruned.pruning_report.json"));
+  const CommandResult result =
+      RunPrunesfm({"prune", "--database", database.string(), "--output", (scratch / "pruned.db").string()});
+  ASSERT_EQ(result.exit_code, 0) << result.err;
+  const ColmapDatabase before = ReadColmapDatabase(database);
+  const ColmapDatabase after = ReadColmapDatabase(scratch / "pruned.db");
+  ASSERT_TRUE(before.verified.empty());
+  const nlohmann::json report = nlohmann::json::parse(std::ifstream(scratch / "pruned.pruning_report.json"));
+  EXPECT_TRUE(report.at("filter").at("verified_here").get<bool>());
+  EXPECT_EQ(after.verified.size(), static_cast<size_t>(report.at("edges_out").get<int>()));
+  EXPECT_GT(after.verified.size(), before.putative.size() / 2);  // a clean scene: most pairs stay
+  for (const auto& [pair, geometry] : after.verified) {
+    ASSERT_EQ(before.putative.count(pair), 1u);
+    EXPECT_GE(geometry.inliers.size(), 30u);  // the verification's minimum
+    EXPECT_LE(geometry.inliers.size(), before.putative.at(pair).size());
+    EXPECT_EQ(geometry.config, static_cast<int>(ColmapTwoViewConfig::kCalibrated));
+    EXPECT_TRUE(geometry.relative_pose.has_value());
+  }
+  EXPECT_EQ(after.putative.size(), before.putative.size());
+  EXPECT_EQ(after.sfm_data.views.size(), before.sfm_data.views.size());
 }
 
 TEST(CliPrune, InputMustBeExactlyOneOfDatabaseAndOpenMvg) {

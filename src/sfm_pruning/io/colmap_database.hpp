@@ -83,4 +83,10 @@ void CopyColmapDatabaseKeepingPairs(const std::filesystem::path& input, const st
                                     const std::set<ViewPair>& keep,
                                     const std::map<ViewPair, std::vector<FeatureMatch>>& drop = {});
 
+// Copies database `input` to `output` (atomically) with `verified` as its two_view_geometries in
+// place of the rows it had; everything else is copied byte for byte. For a database whose matches
+// another tool has not verified (`prunesfm prune` writes its own verification's pairs).
+void CopyColmapDatabaseWithGeometries(const std::filesystem::path& input, const std::filesystem::path& output,
+                                      const std::map<ViewPair, ColmapTwoViewGeometry>& verified);
+
 }  // namespace sfm_pruning

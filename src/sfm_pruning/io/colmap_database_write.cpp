@@ -3,8 +3,10 @@
 // reader ever sees a half-written database.
 #include <Eigen/Geometry>
 #include <cstring>
+#include <map>
 #include <set>
 #include <string>
+#include <vector>
 
 #include "sfm_pruning/io/colmap_camera.hpp"
 #include "sfm_pruning/io/colmap_database.hpp"
@@ -130,6 +132,39 @@ void CheckPair(const ColmapDatabase& database, const ViewPair& pair, const std::
   }
 }
 
+// Inserts a two_view_geometries row per pair (COLMAP 3.8's columns; a database of an older schema
+// without qvec and tvec gets the others).
+void InsertTwoViewGeometries(const std::map<ViewPair, ColmapTwoViewGeometry>& verified, Connection& db) {
+  const bool has_pose = db.HasColumn("two_view_geometries", "qvec") && db.HasColumn("two_view_geometries", "tvec");
+  Statement geometry_row =
+      db.Prepare(has_pose ? "INSERT INTO two_view_geometries (pair_id, rows, cols, data, config, F, E, H, qvec, tvec) "
+                            "VALUES (?, ?, 2, ?, ?, ?, ?, ?, ?, ?)"
+                          : "INSERT INTO two_view_geometries (pair_id, rows, cols, data, config, F, E, H) "
+                            "VALUES (?, ?, 2, ?, ?, ?, ?, ?)");
+  for (const auto& [pair, geometry] : verified) {
+    geometry_row.BindInt64(1, static_cast<int64_t>(ColmapPairId(pair.first, pair.second)));
+    geometry_row.BindInt64(2, static_cast<int64_t>(geometry.inliers.size()));
+    BindBlob(geometry_row, 3, EncodeMatches(geometry.inliers));
+    geometry_row.BindInt64(4, geometry.config);
+    BindBlob(geometry_row, 5, colmap_blobs::EncodeMatrix3(geometry.F));
+    BindBlob(geometry_row, 6, colmap_blobs::EncodeMatrix3(geometry.E));
+    BindBlob(geometry_row, 7, colmap_blobs::EncodeMatrix3(geometry.H));
+    if (has_pose) {
+      // Like COLMAP 3.8, an absent relative pose is stored as zeros.
+      std::vector<double> qvec(4, 0.0), tvec(3, 0.0);
+      if (geometry.relative_pose) {
+        const Eigen::Quaterniond q(geometry.relative_pose->rotation);
+        const Eigen::Vector3d& t = geometry.relative_pose->translation;
+        qvec = {q.w(), q.x(), q.y(), q.z()};
+        tvec = {t.x(), t.y(), t.z()};
+      }
+      BindBlob(geometry_row, 8, EncodeArray(qvec));
+      BindBlob(geometry_row, 9, EncodeArray(tvec));
+    }
+    geometry_row.Run();
+  }
+}
+
 void WriteMatches(const ColmapDatabase& database, const std::string& source, Connection& db) {
   Statement match_row = db.Prepare("INSERT INTO matches (pair_id, rows, cols, data) VALUES (?, ?, 2, ?)");
   for (const auto& [pair, matches] : database.putative) {
@@ -139,30 +174,8 @@ void WriteMatches(const ColmapDatabase& database, const std::string& source, Con
     BindBlob(match_row, 3, EncodeMatches(matches));
     match_row.Run();
   }
-  Statement geometry_row = db.Prepare(
-      "INSERT INTO two_view_geometries (pair_id, rows, cols, data, config, F, E, H, qvec, tvec) "
-      "VALUES (?, ?, 2, ?, ?, ?, ?, ?, ?, ?)");
-  for (const auto& [pair, geometry] : database.verified) {
-    CheckPair(database, pair, source);
-    geometry_row.BindInt64(1, static_cast<int64_t>(ColmapPairId(pair.first, pair.second)));
-    geometry_row.BindInt64(2, static_cast<int64_t>(geometry.inliers.size()));
-    BindBlob(geometry_row, 3, EncodeMatches(geometry.inliers));
-    geometry_row.BindInt64(4, geometry.config);
-    BindBlob(geometry_row, 5, colmap_blobs::EncodeMatrix3(geometry.F));
-    BindBlob(geometry_row, 6, colmap_blobs::EncodeMatrix3(geometry.E));
-    BindBlob(geometry_row, 7, colmap_blobs::EncodeMatrix3(geometry.H));
-    // Like COLMAP 3.8, an absent relative pose is stored as zeros.
-    std::vector<double> qvec(4, 0.0), tvec(3, 0.0);
-    if (geometry.relative_pose) {
-      const Eigen::Quaterniond q(geometry.relative_pose->rotation);
-      const Eigen::Vector3d& t = geometry.relative_pose->translation;
-      qvec = {q.w(), q.x(), q.y(), q.z()};
-      tvec = {t.x(), t.y(), t.z()};
-    }
-    BindBlob(geometry_row, 8, EncodeArray(qvec));
-    BindBlob(geometry_row, 9, EncodeArray(tvec));
-    geometry_row.Run();
-  }
+  for (const auto& [pair, geometry] : database.verified) CheckPair(database, pair, source);
+  InsertTwoViewGeometries(database.verified, db);
 }
 
 void WriteBytes(const fs::path& path, const std::string& bytes) {
@@ -248,6 +261,17 @@ void CopyColmapDatabaseKeepingPairs(const fs::path& input, const fs::path& outpu
       DropInliers(db, static_cast<int64_t>(ColmapPairId(pair.first, pair.second)), matches);
     }
   }
+  db.Execute("COMMIT");
+  WriteBytes(output, db.Serialize());
+}
+
+void CopyColmapDatabaseWithGeometries(const fs::path& input, const fs::path& output,
+                                      const std::map<ViewPair, ColmapTwoViewGeometry>& verified) {
+  Connection db = Connection::InMemoryCopyOf(input.string());
+  colmap_sqlite::RequireColmapTables(db);
+  db.Execute("BEGIN");
+  db.Execute("DELETE FROM two_view_geometries");
+  InsertTwoViewGeometries(verified, db);
   db.Execute("COMMIT");
   WriteBytes(output, db.Serialize());
 }

@@ -35,10 +35,9 @@ struct ExportArguments {
   bool overwrite = false;
 };
 
-// The formats that need the images: undistortion and colour sampling.
-bool NeedsImages(const std::string& format) {
-  return format == "openmvs" || format == "colmap-undistorted" || format == "ply";
-}
+// The formats that need the images: those that write undistorted images. The others colour the
+// points from the images when they are given and keep the model's colours otherwise.
+bool NeedsImages(const std::string& format) { return format == "openmvs" || format == "colmap-undistorted"; }
 
 void RequireExtension(const ExportArguments& args, std::initializer_list<const char*> extensions) {
   const std::string extension = fs::path(args.output).extension().string();
@@ -113,7 +112,7 @@ void AddExportCommand(CLI::App& app) {
       "  colmap-undistorted  OUT/images + OUT/sparse (PINHOLE) + OUT/stereo, COLMAP's dense workspace,\n"
       "                      also read by Gaussian splatting and NeRF tools\n"
       "  colmap              OUT as a COLMAP sparse model (cameras as estimated, distortion kept)\n"
-      "  ply                 OUT.ply, the points coloured from the images\n"
+      "  ply                 OUT.ply, the points (coloured from the images when given, else as in the model)\n"
       "  json                OUT.json (or .bin), OpenMVG sfm_data\n"
       "Point colours are the mean image colour over each point's observations whenever images are given.");
   auto args = std::make_shared<ExportArguments>();

@@ -20,6 +20,7 @@
 #include <set>
 #include <vector>
 
+#include "sfm_pruning/geometry/so3.hpp"
 #include "sfm_pruning/io/colmap_database.hpp"
 #include "sfm_pruning/io/openmvg_matches.hpp"
 #include "sfm_pruning/util/error.hpp"
@@ -85,6 +86,19 @@ PrunedPairs ChangesOfPruning(const sfm_pruning::ViewGraph& verified, const sfm_p
   return changes;
 }
 
+// The valid edges of `graph` as COLMAP two-view geometries (calibrated: E and the relative pose).
+std::map<ViewPair, sfm_pruning::ColmapTwoViewGeometry> GeometriesOf(const sfm_pruning::ViewGraph& graph) {
+  std::map<ViewPair, sfm_pruning::ColmapTwoViewGeometry> geometries;
+  graph.ForEachValidEdge([&](const ViewPair& pair, const sfm_pruning::ViewGraphEdge& edge) {
+    sfm_pruning::ColmapTwoViewGeometry& geometry = geometries[pair];
+    geometry.inliers = edge.matches;
+    geometry.config = static_cast<int>(sfm_pruning::ColmapTwoViewConfig::kCalibrated);
+    geometry.E = sfm_pruning::SkewMatrix(edge.relative_pose.translation) * edge.relative_pose.rotation;
+    geometry.relative_pose = edge.relative_pose;
+  });
+  return geometries;
+}
+
 size_t NumMatches(const std::map<ViewPair, std::vector<sfm_pruning::FeatureMatch>>& matches) {
   size_t count = 0;
   for (const auto& [pair, list] : matches) count += list.size();
@@ -144,10 +158,9 @@ void RunPrune(const PruneArguments& args) {
   const sfm_pruning::ReconstructionInput input =
       colmap ? sfm_pruning::ReadColmapInput(args.database)
              : sfm_pruning::ReadOpenMvgInput(args.sfm_data, args.matches_dir, args.match_file, ProgressOnStderr());
-  if (colmap && input.verified.empty()) {
-    throw Error(args.database +
-                ": no two-view geometries to prune (verify the matches first, e.g. colmap exhaustive_matcher)");
-  }
+  // A database of matches only (another tool matched, nothing verified): our verification's pairs,
+  // minus the pruned ones, become its two-view geometries.
+  const bool verified_here = colmap && input.verified.empty();
   const double read_seconds = clock.Lap();
 
   // Cameras whose focal is a guess (COLMAP's prior_focal_length = 0) are calibrated on the view
@@ -191,7 +204,10 @@ void RunPrune(const PruneArguments& args) {
   const PrunedPairs changes = ChangesOfPruning(graph, pruned);
   const std::set<ViewPair> keep = PairsToKeep(input, changes.removed);
   size_t num_pairs = 0;
-  if (colmap) {
+  if (verified_here) {
+    num_pairs = input.putative.size();
+    sfm_pruning::CopyColmapDatabaseWithGeometries(args.database, output, GeometriesOf(pruned));
+  } else if (colmap) {
     num_pairs = input.verified.size();
     sfm_pruning::CopyColmapDatabaseKeepingPairs(args.database, output, keep, changes.dropped_matches);
   } else {
@@ -204,6 +220,7 @@ void RunPrune(const PruneArguments& args) {
   report["filter"] = {{"input", colmap ? args.database : input.source},
                       {"output", output.string()},
                       {"format", colmap ? "colmap_database" : "openmvg_matches"},
+                      {"verified_here", verified_here},
                       {"input_pairs", num_pairs},
                       {"removed_pairs", changes.removed.size()},
                       {"pairs_with_matches_dropped", changes.dropped_matches.size()},

@@ -1,7 +1,7 @@
 // prunesfm run: the main command.
 //   prunesfm run IMAGES_DIR OUT_DIR   images -> init -> features -> match -> engine, resumable
 //   prunesfm run                      the same on the default dataset (templeSparseRing) into out/default
-//   prunesfm run --database DB --image_path DIR --output_path OUT   GLOMAP-style: a COLMAP database in
+//   prunesfm run --database DB [--image_path DIR] --output_path OUT   GLOMAP-style: a COLMAP database in
 #include <CLI/CLI.hpp>
 
 #include <chrono>
@@ -43,9 +43,7 @@ double SecondsSince(std::chrono::steady_clock::time_point start) {
 }
 
 void RunFromDatabase(const RunArguments& args) {
-  if (args.image_path.empty() || args.output.empty()) {
-    throw Error("run: --database needs --image_path and --output_path");
-  }
+  if (args.output.empty()) throw Error("run: --database needs --output_path");
   PrepareRunFolder(args.output, args.overwrite);
   const auto start = std::chrono::steady_clock::now();
   sfm_pruning::ReconstructionInput input = sfm_pruning::ReadColmapInput(args.database);
@@ -173,13 +171,14 @@ void AddRunCommand(CLI::App& app) {
       "when their inputs and options did not change: OUT/run_manifest.json), then the engine: OUT/sfm_data.json,\n"
       "OUT/sparse/0, OUT/cloud_and_poses.ply, OUT/timings.json. Without arguments: the default dataset\n"
       "(../shared/" + std::string(kDefaultDatasetRelative) + ") into out/default.\n"
-      "'prunesfm run --database DB --image_path DIR --output_path OUT': from a COLMAP database, like 'glomap mapper'.");
+      "'prunesfm run --database DB [--image_path DIR] --output_path OUT': from a COLMAP database, like 'glomap mapper'.");
   auto args = std::make_shared<RunArguments>();
   cmd->add_option("IMAGES_DIR", args->images, "Folder of images");
   cmd->add_option("OUT_DIR", args->output_dir, "Output folder");
   cmd->add_option("--database_path,--database", args->database, "COLMAP database.db");
   cmd->add_option("--image_path", args->image_path,
-                  "With --database: image folder (the points are coloured from its images when they are all there)");
+                  "With --database: image folder (the points are coloured from its images when they are all "
+                  "there; without it, or for a synthetic database, they stay grey)");
   cmd->add_option("--output_path,--output", args->output, "With --database: output folder");
   cmd->add_flag("--force", args->force, "Rerun every stage, ignoring OUT/run_manifest.json");
   cmd->add_flag("--no_colmap_database", args->no_colmap_database,
