@@ -94,7 +94,7 @@ TEST(SubgraphCycles, LongerCyclesGetThePapersLoopFactor) {
     const LoopScene ring(length);
     std::vector<SubgraphLink> links;
     for (int k = 0; k + 1 < static_cast<int>(length); ++k) links.push_back(ring.Link(k, k + 1, 5));
-    const Eigen::Vector3d& centre = ring.subgraphs[0].centre;
+    const Eigen::Vector3d& centre = ring.subgraphs[0].center;
     links.push_back(ring.Link(0, static_cast<int>(length) - 1, 5, testing::TurnAbout(centre, 7.0)));
     SubgraphLoopOptions options;
     options.max_translation_fraction = 10.0;  // judge the rotation alone

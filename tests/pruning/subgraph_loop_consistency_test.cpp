@@ -35,7 +35,7 @@ TEST(SubgraphLoops, TheOneWrongPairIsRejectedEvenWithTheLargestSupport) {
   for (int a = 0; a < 4; ++a) {
     for (int b = a + 1; b < 4; ++b) {
       const bool wrong = a == 2 && b == 3;  // like books: every edge between 2 and 3 is a doppelganger
-      links.push_back(wrong ? scene.Link(a, b, 40, TurnAbout(scene.subgraphs[2].centre, 60.0)) : scene.Link(a, b, 10));
+      links.push_back(wrong ? scene.Link(a, b, 40, TurnAbout(scene.subgraphs[2].center, 60.0)) : scene.Link(a, b, 10));
     }
   }
   const SubgraphLoopResult result = FindLoopInconsistentLinks(links, scene.subgraphs);
@@ -81,7 +81,7 @@ TEST(SubgraphLoops, ASingleBrokenTriangleLosesItsWeakestPairAndPairsOutsideTrian
   const LoopScene scene(4);
   // Triangle (0, 1, 2) with a wrong (1, 2), plus subgraph 3 hanging on (2, 3), in no triangle.
   std::vector<SubgraphLink> links = {scene.Link(0, 1, 30), scene.Link(0, 2, 20),
-                                     scene.Link(1, 2, 5, TurnAbout(scene.subgraphs[1].centre, 30.0)),
+                                     scene.Link(1, 2, 5, TurnAbout(scene.subgraphs[1].center, 30.0)),
                                      scene.Link(2, 3, 1)};
   const SubgraphLoopResult result = FindLoopInconsistentLinks(links, scene.subgraphs);
   ASSERT_EQ(result.triangles.size(), 1u);
@@ -95,7 +95,7 @@ TEST(SubgraphLoops, ASingleBrokenTriangleLosesItsWeakestPairAndPairsOutsideTrian
 TEST(SubgraphLoops, SwitchedOffItMeasuresButRejectsNothing) {
   const LoopScene scene(3);
   const std::vector<SubgraphLink> links = {scene.Link(0, 1, 10), scene.Link(0, 2, 10),
-                                           scene.Link(1, 2, 10, TurnAbout(scene.subgraphs[1].centre, 45.0))};
+                                           scene.Link(1, 2, 10, TurnAbout(scene.subgraphs[1].center, 45.0))};
   SubgraphLoopOptions options;
   options.enabled = false;
   const SubgraphLoopResult result = FindLoopInconsistentLinks(links, scene.subgraphs, options);

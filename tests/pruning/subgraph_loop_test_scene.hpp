@@ -47,7 +47,7 @@ struct LoopScene {
     for (size_t k = 0; k < world_centres.size(); ++k) {
       frames.push_back(RandomSimilarity(100 + k, 0.5 + 0.3 * static_cast<double>(k)));
       SubgraphFrame frame;
-      frame.centre = frames[k].Apply(world_centres[k]);
+      frame.center = frames[k].Apply(world_centres[k]);
       frame.radius = frames[k].scale;
       subgraphs.push_back(frame);
     }

@@ -101,17 +101,17 @@ SubgraphCycle MeasureSubgraphCycle(const std::vector<int>& subgraphs, const std:
   const SubgraphFrame& first = frames[static_cast<size_t>(subgraphs.front())];
   // accumulated = T_{c0 <- c(k+1)}; the centres of c1.. in c0's frame along the way.
   Similarity3 accumulated;
-  std::vector<Eigen::Vector3d> centres{first.centre};
+  std::vector<Eigen::Vector3d> centres{first.center};
   for (size_t k = 0; k < length; ++k) {
     accumulated = accumulated.Compose(to_previous[k]);
-    if (k + 1 < length) centres.push_back(accumulated.Apply(frames[static_cast<size_t>(subgraphs[k + 1])].centre));
+    if (k + 1 < length) centres.push_back(accumulated.Apply(frames[static_cast<size_t>(subgraphs[k + 1])].center));
   }
   double sides = 0.0;
   for (size_t k = 0; k < length; ++k) sides += (centres[k] - centres[(k + 1) % length]).norm();
   const double reference = std::max(sides / static_cast<double>(length), first.radius);
   cycle.rotation_deg = RadToDeg(RotationAngleBetween(accumulated.rotation, Eigen::Matrix3d::Identity()));
   cycle.scale_ratio = accumulated.scale >= 1.0 ? accumulated.scale : 1.0 / accumulated.scale;
-  const double displacement = (accumulated.Apply(first.centre) - first.centre).norm();
+  const double displacement = (accumulated.Apply(first.center) - first.center).norm();
   cycle.translation_fraction = reference > 0.0 ? displacement / reference : 0.0;
   cycle.loop_factor = std::max<size_t>(1, (length - 1) / 2);
   const CycleBounds bounds = WidenedCycleBounds(cycle.loop_factor, options);

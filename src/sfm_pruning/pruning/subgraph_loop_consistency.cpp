@@ -21,12 +21,12 @@ SubgraphTriangle MeasureSubgraphTriangle(int a, int b, int c, const Similarity3&
   const Similarity3 loop = b_to_a.Compose(c_to_b).Compose(c_to_a.Inverse());
   triangle.rotation_deg = RadToDeg(RotationAngleBetween(loop.rotation, Eigen::Matrix3d::Identity()));
   triangle.scale_ratio = loop.scale >= 1.0 ? loop.scale : 1.0 / loop.scale;
-  const Eigen::Vector3d centre_b = b_to_a.Apply(frame_b.centre);
-  const Eigen::Vector3d centre_c = c_to_a.Apply(frame_c.centre);
+  const Eigen::Vector3d centre_b = b_to_a.Apply(frame_b.center);
+  const Eigen::Vector3d centre_c = c_to_a.Apply(frame_c.center);
   const double mean_side =
-      ((frame_a.centre - centre_b).norm() + (frame_a.centre - centre_c).norm() + (centre_b - centre_c).norm()) / 3.0;
+      ((frame_a.center - centre_b).norm() + (frame_a.center - centre_c).norm() + (centre_b - centre_c).norm()) / 3.0;
   const double reference = std::max(mean_side, frame_a.radius);
-  const double displacement = (loop.Apply(frame_a.centre) - frame_a.centre).norm();
+  const double displacement = (loop.Apply(frame_a.center) - frame_a.center).norm();
   triangle.translation_fraction = reference > 0.0 ? displacement / reference : 0.0;
   triangle.consistent = triangle.rotation_deg <= options.max_rotation_deg &&
                         triangle.scale_ratio <= options.max_scale_ratio &&

@@ -79,7 +79,7 @@ struct SubgraphLoopOptions {
 // A subgraph's mean camera centre and radius (median distance of its centres to the mean), in its
 // own frame: the translation error's reference length.
 struct SubgraphFrame {
-  Eigen::Vector3d centre = Eigen::Vector3d::Zero();
+  Eigen::Vector3d center = Eigen::Vector3d::Zero();
   double radius = 0.0;
 };
 

@@ -45,9 +45,9 @@ SubgraphAlignmentOptions PairAlignmentOptions(const ViewGraphPruningOptions& opt
 SubgraphFrame FrameOfSubgraph(const SubgraphSolution& solution) {
   SubgraphFrame frame;
   if (solution.poses.empty()) return frame;
-  frame.centre = SubgraphMeanCentre(solution);  // not SubgraphMeanPose: its rotation mean is unused here
+  frame.center = SubgraphMeanCentre(solution);  // not SubgraphMeanPose: its rotation mean is unused here
   std::vector<double> distances;
-  for (const auto& [view_id, pose] : solution.poses) distances.push_back((pose.center - frame.centre).norm());
+  for (const auto& [view_id, pose] : solution.poses) distances.push_back((pose.center - frame.center).norm());
   frame.radius = Median(std::move(distances));
   return frame;
 }
