@@ -887,6 +887,9 @@ def main():
         base.view_name = "view_00000.png"
     classes = args.classes.split(",")
     cases = [c for c in Cases(base, args.seed).build() if args.only in c.name and c.klass in classes]
+    if not cases:
+        print(f"no case matches --only {args.only!r} in the classes {args.classes}", file=sys.stderr)
+        return 2
     if args.list:
         for c in cases:
             print(f"{c.klass:7} {c.expect:7} {c.name}")
