@@ -873,7 +873,9 @@ def main():
     parser.add_argument("--only", default="", help="run only the cases whose name contains this")
     parser.add_argument("--classes", default="file,value,record,image,output,option",
                         help="comma-separated classes of cases to run")
-    parser.add_argument("--output", default=str(REPO / "bench" / "sections" / "hostile_inputs.md"))
+    parser.add_argument("--output", default=None,
+                        help="markdown report (default: bench/sections/hostile_inputs.md for the whole list, "
+                             "WORK/report.md when --only or --classes runs a part of it)")
     parser.add_argument("--list", action="store_true", help="list the cases and exit")
     args = parser.parse_args()
     prunesfm = str(Path(args.prunesfm).resolve()) if args.prunesfm else bs.rb.find_prunesfm(None)
@@ -886,6 +888,9 @@ def main():
     else:
         base.view_name = "view_00000.png"
     classes = args.classes.split(",")
+    if args.output is None:
+        whole = not args.only and set(classes) == {"file", "value", "record", "image", "output", "option"}
+        args.output = str(REPO / "bench" / "sections" / "hostile_inputs.md") if whole else str(work / "report.md")
     cases = [c for c in Cases(base, args.seed).build() if args.only in c.name and c.klass in classes]
     if not cases:
         print(f"no case matches --only {args.only!r} in the classes {args.classes}", file=sys.stderr)
