@@ -231,14 +231,7 @@ void WriteMatchDatabase(const sfm_pruning::SfmData& scene, const sfm_pruning::Vi
     database.intrinsics_with_guessed_focal = sfm_pruning::ReadCameraPriors(priors).IntrinsicsWithGuessedFocal();
   }
   database.putative = putative;
-  for (const auto& [pair, edge] : graph.Edges()) {
-    if (!edge.is_valid) continue;
-    sfm_pruning::ColmapTwoViewGeometry& geometry = database.verified[pair];
-    geometry.inliers = edge.matches;
-    geometry.config = static_cast<int>(sfm_pruning::ColmapTwoViewConfig::kCalibrated);
-    geometry.E = sfm_pruning::SkewMatrix(edge.relative_pose.translation) * edge.relative_pose.rotation;
-    geometry.relative_pose = edge.relative_pose;
-  }
+  database.verified = ColmapGeometriesOf(graph);
   database.features = std::move(*features);
   try {
     sfm_pruning::WriteColmapDatabase(database, path);
@@ -250,6 +243,19 @@ void WriteMatchDatabase(const sfm_pruning::SfmData& scene, const sfm_pruning::Vi
 }
 
 }  // namespace
+
+std::map<sfm_pruning::ViewPair, sfm_pruning::ColmapTwoViewGeometry> ColmapGeometriesOf(
+    const sfm_pruning::ViewGraph& graph) {
+  std::map<sfm_pruning::ViewPair, sfm_pruning::ColmapTwoViewGeometry> geometries;
+  graph.ForEachValidEdge([&](const sfm_pruning::ViewPair& pair, const sfm_pruning::ViewGraphEdge& edge) {
+    sfm_pruning::ColmapTwoViewGeometry& geometry = geometries[pair];
+    geometry.inliers = edge.matches;
+    geometry.config = static_cast<int>(sfm_pruning::ColmapTwoViewConfig::kCalibrated);
+    geometry.E = sfm_pruning::SkewMatrix(edge.relative_pose.translation) * edge.relative_pose.rotation;
+    geometry.relative_pose = edge.relative_pose;
+  });
+  return geometries;
+}
 
 MatchStageSummary RunMatchStage(const MatchSettings& settings, const sfm_pruning::SfmData& scene,
                                 sfm_pruning::FeaturesPerView* features, const fs::path& matches_dir, int num_threads,

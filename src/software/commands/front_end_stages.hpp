@@ -12,10 +12,13 @@
 #include <cstddef>
 #include <cstdint>
 #include <filesystem>
+#include <map>
 #include <string>
 
+#include "sfm_pruning/io/colmap_database.hpp"
 #include "sfm_pruning/sfm/features.hpp"
 #include "sfm_pruning/sfm/sfm_data.hpp"
+#include "sfm_pruning/view_graph/view_graph.hpp"
 
 namespace CLI {
 class App;
@@ -88,6 +91,11 @@ struct MatchStageSummary {
   size_t num_verified_pairs = 0;
   size_t num_verified_inliers = 0;
 };
+
+// The valid edges of `graph` as COLMAP two-view geometries: inliers, E and the relative pose,
+// config CALIBRATED (`run IMAGES OUT`'s database.db, `prune` of a database of matches only).
+std::map<sfm_pruning::ViewPair, sfm_pruning::ColmapTwoViewGeometry> ColmapGeometriesOf(
+    const sfm_pruning::ViewGraph& graph);
 
 // Features (with descriptors) -> matches.putative.bin and matches.e.bin in matches_dir. With a
 // `colmap_database` path, also the same features, matches and verified pairs as a COLMAP 3.8

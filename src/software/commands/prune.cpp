@@ -20,12 +20,12 @@
 #include <set>
 #include <vector>
 
-#include "sfm_pruning/geometry/so3.hpp"
 #include "sfm_pruning/io/colmap_database.hpp"
 #include "sfm_pruning/io/openmvg_matches.hpp"
 #include "sfm_pruning/util/error.hpp"
 #include "software/cli_support.hpp"
 #include "software/commands.hpp"
+#include "software/commands/front_end_stages.hpp"
 #include "software/commands/pruning_options.hpp"
 #include "software/commands/pruning_report_json.hpp"
 #include "software/commands/reconstruction_pipeline.hpp"
@@ -59,6 +59,18 @@ class StageClock {
   std::chrono::steady_clock::time_point last_ = std::chrono::steady_clock::now();
 };
 
+// The matches of `matches` that `excluded` does not hold, in their order.
+std::vector<sfm_pruning::FeatureMatch> MatchesNotIn(const std::vector<sfm_pruning::FeatureMatch>& matches,
+                                                    const std::vector<sfm_pruning::FeatureMatch>& excluded) {
+  std::set<std::pair<sfm_pruning::IndexT, sfm_pruning::IndexT>> out;
+  for (const sfm_pruning::FeatureMatch& match : excluded) out.emplace(match.i, match.j);
+  std::vector<sfm_pruning::FeatureMatch> kept;
+  for (const sfm_pruning::FeatureMatch& match : matches) {
+    if (out.count({match.i, match.j}) == 0) kept.push_back(match);
+  }
+  return kept;
+}
+
 // What the pruning changed in the verified graph: the edges it removed, and the matches the
 // landmark check took out of the edges it kept.
 struct PrunedPairs {
@@ -75,28 +87,10 @@ PrunedPairs ChangesOfPruning(const sfm_pruning::ViewGraph& verified, const sfm_p
       changes.removed.insert(pair);
       continue;
     }
-    std::set<std::pair<sfm_pruning::IndexT, sfm_pruning::IndexT>> kept;
-    for (const sfm_pruning::FeatureMatch& match : after->matches) kept.emplace(match.i, match.j);
-    std::vector<sfm_pruning::FeatureMatch> dropped;
-    for (const sfm_pruning::FeatureMatch& match : edge.matches) {
-      if (kept.count({match.i, match.j}) == 0) dropped.push_back(match);
-    }
+    std::vector<sfm_pruning::FeatureMatch> dropped = MatchesNotIn(edge.matches, after->matches);
     if (!dropped.empty()) changes.dropped_matches.emplace(pair, std::move(dropped));
   }
   return changes;
-}
-
-// The valid edges of `graph` as COLMAP two-view geometries (calibrated: E and the relative pose).
-std::map<ViewPair, sfm_pruning::ColmapTwoViewGeometry> GeometriesOf(const sfm_pruning::ViewGraph& graph) {
-  std::map<ViewPair, sfm_pruning::ColmapTwoViewGeometry> geometries;
-  graph.ForEachValidEdge([&](const ViewPair& pair, const sfm_pruning::ViewGraphEdge& edge) {
-    sfm_pruning::ColmapTwoViewGeometry& geometry = geometries[pair];
-    geometry.inliers = edge.matches;
-    geometry.config = static_cast<int>(sfm_pruning::ColmapTwoViewConfig::kCalibrated);
-    geometry.E = sfm_pruning::SkewMatrix(edge.relative_pose.translation) * edge.relative_pose.rotation;
-    geometry.relative_pose = edge.relative_pose;
-  });
-  return geometries;
 }
 
 size_t NumMatches(const std::map<ViewPair, std::vector<sfm_pruning::FeatureMatch>>& matches) {
@@ -116,12 +110,7 @@ sfm_pruning::PairwiseMatches KeptMatches(const sfm_pruning::PairwiseMatches& put
       kept.emplace(pair, matches);
       continue;
     }
-    std::set<std::pair<sfm_pruning::IndexT, sfm_pruning::IndexT>> gone;
-    for (const sfm_pruning::FeatureMatch& match : drop->second) gone.emplace(match.i, match.j);
-    std::vector<sfm_pruning::FeatureMatch>& out = kept[pair];
-    for (const sfm_pruning::FeatureMatch& match : matches) {
-      if (gone.count({match.i, match.j}) == 0) out.push_back(match);
-    }
+    kept.emplace(pair, MatchesNotIn(matches, drop->second));
   }
   return kept;
 }
@@ -206,7 +195,7 @@ void RunPrune(const PruneArguments& args) {
   size_t num_pairs = 0;
   if (verified_here) {
     num_pairs = input.putative.size();
-    sfm_pruning::CopyColmapDatabaseWithGeometries(args.database, output, GeometriesOf(pruned));
+    sfm_pruning::CopyColmapDatabaseWithGeometries(args.database, output, ColmapGeometriesOf(pruned));
   } else if (colmap) {
     num_pairs = input.verified.size();
     sfm_pruning::CopyColmapDatabaseKeepingPairs(args.database, output, keep, changes.dropped_matches);
