@@ -40,7 +40,11 @@ TEST(CliReport, RunRecordsTheViewGraphAndReportAndEpipolarDrawIt) {
   const nlohmann::json pruning = nlohmann::json::parse(std::ifstream(PrunedRun() / "pruned" / "pruning_report.json"));
   EXPECT_EQ(graph.at("edges").size(), pruning.at("edges_in").get<size_t>());
   size_t removed = 0;
-  for (const auto& edge : graph.at("edges")) removed += edge.at("removed").get<bool>() ? 1 : 0;
+  for (const auto& edge : graph.at("edges")) {
+    if (!edge.at("removed").get<bool>()) continue;
+    ++removed;
+    EXPECT_NE(edge.at("measure").get<std::string>(), "unspecified") << edge.dump();
+  }
   EXPECT_EQ(removed, pruning.at("removed_edges").size());
 
   const fs::path scratch = ScratchDir("cli_report_outputs");
@@ -56,6 +60,10 @@ TEST(CliReport, RunRecordsTheViewGraphAndReportAndEpipolarDrawIt) {
   const std::string html((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
   EXPECT_NE(html.find("view_00002.jpg at (500, 380)"), std::string::npos);
   EXPECT_NE(html.find("View graph before and after pruning"), std::string::npos);
+  EXPECT_NE(html.find(removed == 0 ? std::string("The pruning removed no edge.")
+                                   : "The pruning removed " + std::to_string(removed) + " of " +
+                                         std::to_string(graph.at("edges").size()) + " verified edges."),
+            std::string::npos);
 
   const CommandResult epipolar =
       RunPrunesfm({"epipolar", "--model", (PrunedRun() / "pruned" / "sfm_data.json").string(), "--image",

@@ -181,6 +181,8 @@ TEST(EnginePrunedScene, DuplicateSceneReportsGlobalVersusPruned) {
                 removed.invalidation.reason == EdgeInvalidReason::kSubgraphLoopInconsistent ||
                 removed.invalidation.reason == EdgeInvalidReason::kUnverifiedSubgraphPair)
         << EdgeInvalidReasonName(removed.invalidation.reason);
+    // Every cut says what its value measures (the report puts it in words with its unit).
+    EXPECT_NE(removed.invalidation.Measure(), EdgeMeasure::kOfReason);
   }
 }
 

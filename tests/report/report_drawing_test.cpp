@@ -4,6 +4,7 @@
 #include "report_test_run.hpp"
 #include "sfm_pruning/report/data_uri.hpp"
 #include "sfm_pruning/report/graph_layout.hpp"
+#include "sfm_pruning/report/removal_summary.hpp"
 #include "sfm_pruning/report/svg_builder.hpp"
 #include "sfm_pruning/report/timings_drawing.hpp"
 #include "sfm_pruning/report/top_view.hpp"
@@ -70,11 +71,68 @@ TEST(ReportDrawing, GraphPanelsMarkEveryRemovedEdge) {
   const std::string after = DrawViewGraphSvg(graph, layout, ViewGraphPanel::kAfterPruning);
   EXPECT_EQ(Count(before, "<line"), graph.edges.size());
   EXPECT_EQ(Count(before, "stroke-dasharray"), 0u);
-  EXPECT_EQ(Count(after, "stroke-dasharray"), graph.NumRemovedEdges());
+  // The removed edges all join subgraphs 1 and 2: one bundle.
+  EXPECT_EQ(Count(after, "stroke-dasharray"), 1u);
   EXPECT_EQ(Count(after, "<circle"), 12u);
-  EXPECT_NE(after.find("removed (inter_subgraph_inconsistent: 12.5 &gt; 5)"), std::string::npos);
+  EXPECT_NE(after.find("subgraph 1 - subgraph 2: 6 edges removed, 0 kept; all because they disagree with the "
+                       "alignment of their two subgraphs that the inter-subgraph RANSAC chose (median 12.5\u00b0 off, "
+                       "allowed 5\u00b0)"),
+            std::string::npos);
+  // Before pruning, each edge's tooltip gives its cut in words.
+  EXPECT_NE(before.find("removed because they disagree with the alignment of their two subgraphs that the "
+                        "inter-subgraph RANSAC chose (12.5\u00b0, bound 5\u00b0)"),
+            std::string::npos);
   EXPECT_NE(after.find(SubgraphColor(1).Hex()), std::string::npos);
   EXPECT_EQ(after, DrawViewGraphSvg(graph, LayoutRunViewGraph(graph, 0), ViewGraphPanel::kAfterPruning));
+}
+
+TEST(ReportDrawing, RemovalSummaryGroupsCutsByReasonAndSubgraphPair) {
+  RunViewGraph graph = TwoSubgraphGraph(RingScene(12));
+  // One cut by the model audit instead, and one removed edge inside subgraph 1.
+  for (RunGraphEdge& edge : graph.edges) {
+    if (edge.removed) {
+      edge = {edge.i, edge.j, edge.inliers, true, "model_disagreement", 0.05, 0.2, "agreeing_share"};
+      break;
+    }
+  }
+  RunGraphEdge& inside = graph.edges.front();
+  ASSERT_FALSE(inside.removed);
+  inside = {inside.i, inside.j, inside.inliers, true, "landmark_disagreement", 3, 5, "matches_left"};
+
+  const RemovalSummary summary = SummariseRemovals(graph);
+  EXPECT_EQ(summary.edges, graph.edges.size());
+  EXPECT_EQ(summary.removed, 7u);
+  ASSERT_EQ(summary.groups.size(), 3u);
+  EXPECT_EQ(summary.groups[0].reason, "inter_subgraph_inconsistent");
+  EXPECT_EQ(summary.groups[0].edges, 5u);
+  EXPECT_EQ(summary.groups[0].subgraph_pairs, 1u);
+  EXPECT_EQ(GroupMeasureInWords(summary.groups[0]), "median 12.5\u00b0 off, allowed 5\u00b0");
+  // Ties in count: by reason name.
+  EXPECT_EQ(summary.groups[1].reason, "landmark_disagreement");
+  EXPECT_EQ(GroupMeasureInWords(summary.groups[1]), "median 3 matches left, 5 needed");
+  EXPECT_EQ(summary.groups[2].reason, "model_disagreement");
+  EXPECT_EQ(GroupMeasureInWords(summary.groups[2]), "median 5 % of the matches agree with the model, 20 % needed");
+
+  // Most removed first: the pair of the two subgraphs, then the one inside subgraph 1.
+  ASSERT_EQ(summary.pairs.size(), 2u);
+  EXPECT_EQ(std::make_pair(summary.pairs[0].a, summary.pairs[0].b), std::make_pair(0, 1));
+  EXPECT_EQ(summary.pairs[0].removed, 6u);
+  EXPECT_EQ(summary.pairs[0].main.reason, "inter_subgraph_inconsistent");
+  EXPECT_EQ(summary.pairs[0].main.edges, 5u);
+  EXPECT_EQ(std::make_pair(summary.pairs[1].a, summary.pairs[1].b), std::make_pair(0, 0));
+  EXPECT_EQ(summary.pairs[1].removed, 1u);
+
+  // The bundle between the subgraphs, plus the removed edge inside one drawn alone.
+  const std::string after =
+      DrawViewGraphSvg(graph, LayoutRunViewGraph(graph, 0), ViewGraphPanel::kAfterPruning);
+  EXPECT_EQ(Count(after, "stroke-dasharray"), 2u);
+  EXPECT_NE(after.find("6 edges removed, 0 kept; 5 because they disagree"), std::string::npos);
+
+  // Files from before the measure was recorded: the bare numbers.
+  EXPECT_EQ(MeasureValueInWords("subgraph_loop_inconsistent", "", 1.814), "1.81");
+  EXPECT_EQ(MeasureValueInWords("subgraph_loop_inconsistent", "translation_fraction", 0.5),
+            "0.5 \u00d7 the loop's mean side");
+  EXPECT_EQ(RemovalReasonInWords("a_future_reason"), "a_future_reason");
 }
 
 TEST(ReportDrawing, TopViewLooksDownOnTheGround) {

@@ -37,6 +37,7 @@ TEST(ReportHtml, ViewGraphRecordRoundTrips) {
     EXPECT_EQ(read.edges[k].inliers, graph.edges[k].inliers);
     EXPECT_EQ(read.edges[k].reason, graph.edges[k].reason);
     EXPECT_EQ(read.edges[k].value, graph.edges[k].value);
+    EXPECT_EQ(read.edges[k].measure, graph.edges[k].measure);
   }
 }
 
@@ -93,6 +94,12 @@ TEST(ReportHtml, ComparisonPageIsSelfContainedDeterministicAndComplete) {
   // The estimate is the truth: every AUC card reads 100.
   EXPECT_NE(html.find("AUC@3\u00b0</div><div class=\"v\">100 <small>%</small>"), std::string::npos);
   EXPECT_NE(html.find("After pruning: 18 edges kept, 6 removed"), std::string::npos);
+  // The summary leads the graph section, in words with units.
+  EXPECT_NE(html.find("The pruning removed 6 of 24 verified edges."), std::string::npos);
+  EXPECT_NE(html.find("<tr><td>6</td><td>they disagree with the alignment of their two subgraphs that the "
+                      "inter-subgraph RANSAC chose <small><code>inter_subgraph_inconsistent</code></small></td>"
+                      "<td>1</td><td>median 12.5\u00b0 off, allowed 5\u00b0</td></tr>"),
+            std::string::npos);
 }
 
 }  // namespace

@@ -73,6 +73,7 @@ RunViewGraph TwoSubgraphGraph(const SfmData& scene) {
         edge.reason = "inter_subgraph_inconsistent";
         edge.value = 12.5;
         edge.threshold = 5.0;
+        edge.measure = "degrees";
       }
       graph.edges.push_back(edge);
     }
@@ -90,7 +91,7 @@ void WriteTestRun(const SfmData& scene, const std::string& engine, const std::fi
   if (engine != "GLOBAL_PRUNED") {
     graph.num_subgraphs = 0;
     for (RunGraphView& view : graph.views) view.subgraph = -1;
-    for (RunGraphEdge& edge : graph.edges) edge = {edge.i, edge.j, edge.inliers, false, "", 0.0, 0.0};
+    for (RunGraphEdge& edge : graph.edges) edge = {edge.i, edge.j, edge.inliers, false, "", 0.0, 0.0, ""};
   }
   WriteRunViewGraph(graph, dir / "view_graph.json");
   std::ofstream(dir / "timings.json") << R"({"engine": ")" << engine

@@ -69,6 +69,13 @@ TEST(ViewGraph, InvalidEdgesStayButAreSkippedByValidQueries) {
   EXPECT_DOUBLE_EQ(cut->invalidation.value, 12.5);
   EXPECT_DOUBLE_EQ(cut->invalidation.threshold, 10.0);
   EXPECT_EQ(EdgeInvalidReasonName(cut->invalidation.reason), "rotation_residual");
+  // Unnamed, the measure is the reason's own; a producer can name another.
+  EXPECT_EQ(cut->invalidation.Measure(), EdgeMeasure::kDegrees);
+  EXPECT_EQ(EdgeMeasureName(cut->invalidation.Measure()), "degrees");
+  const EdgeInvalidation by_scale{EdgeInvalidReason::kSubgraphLoopInconsistent, 2.5, 2.0, EdgeMeasure::kScaleRatio};
+  EXPECT_EQ(EdgeMeasureName(by_scale.Measure()), "scale_ratio");
+  EXPECT_EQ(DefaultEdgeMeasure(EdgeInvalidReason::kSubgraphLoopInconsistent), EdgeMeasure::kBrokenLoops);
+  EXPECT_EQ(DefaultEdgeMeasure(EdgeInvalidReason::kModelDisagreement), EdgeMeasure::kAgreeingShare);
 
   EXPECT_EQ(graph.NumEdges(), 4u);
   EXPECT_EQ(graph.NumValidEdges(), 3u);

@@ -377,13 +377,15 @@ EdgeInvalidation InterSubgraphInvalidation(const InterSubgraphEdgeDecision& deci
                                   ? decision.translation_deviation * options.max_translation_deviation_fraction /
                                         decision.translation_threshold
                                   : decision.translation_deviation;
-      return {EdgeInvalidReason::kInterSubgraphInconsistent, relative, options.max_translation_deviation_fraction};
+      return {EdgeInvalidReason::kInterSubgraphInconsistent, relative, options.max_translation_deviation_fraction,
+              EdgeMeasure::kTranslationFraction};
     }
     case InterSubgraphVerdict::kCannotVote:
       return {EdgeInvalidReason::kOther, static_cast<double>(decision.placement.num_correspondences),
-              static_cast<double>(options.placement.min_correspondences)};
+              static_cast<double>(options.placement.min_correspondences), EdgeMeasure::kCorrespondences};
     case InterSubgraphVerdict::kFewEdges:
-      return {EdgeInvalidReason::kOther, 0.0, static_cast<double>(options.min_edges_for_ransac)};
+      return {EdgeInvalidReason::kOther, 0.0, static_cast<double>(options.min_edges_for_ransac),
+              EdgeMeasure::kVotingEdges};
     default:
       return {EdgeInvalidReason::kOther, 0.0, 0.0};
   }

@@ -95,9 +95,13 @@ bool KeepsAllIfKept(const SubgraphAlignmentResult& alignment) {
 EdgeInvalidation CycleInvalidation(const SubgraphCycle& cycle, const SubgraphLoopOptions& options) {
   const CycleBounds bounds = WidenedCycleBounds(cycle.loop_factor, options);
   const EdgeInvalidReason reason = EdgeInvalidReason::kSubgraphLoopInconsistent;
-  if (cycle.rotation_deg > bounds.rotation_deg) return {reason, cycle.rotation_deg, bounds.rotation_deg};
-  if (cycle.scale_ratio > bounds.scale_ratio) return {reason, cycle.scale_ratio, bounds.scale_ratio};
-  return {reason, cycle.translation_fraction, bounds.translation_fraction};
+  if (cycle.rotation_deg > bounds.rotation_deg) {
+    return {reason, cycle.rotation_deg, bounds.rotation_deg, EdgeMeasure::kDegrees};
+  }
+  if (cycle.scale_ratio > bounds.scale_ratio) {
+    return {reason, cycle.scale_ratio, bounds.scale_ratio, EdgeMeasure::kScaleRatio};
+  }
+  return {reason, cycle.translation_fraction, bounds.translation_fraction, EdgeMeasure::kTranslationFraction};
 }
 
 // Method::kTriangleVote: the triangle vote, then the longer cycles, over the pairs with a usable
@@ -126,7 +130,7 @@ std::vector<PairVerdict> VoteOnTriangles(const std::vector<std::pair<int, int>>&
     verdicts[p].cut = true;
     verdicts[p].invalidation = {EdgeInvalidReason::kSubgraphLoopInconsistent,
                                 static_cast<double>(rejected.inconsistent_triangles),
-                                static_cast<double>(rejected.consistent_triangles)};
+                                static_cast<double>(rejected.consistent_triangles), EdgeMeasure::kBrokenLoops};
     out->pairs[p].rejected_by_loops = true;
     out->pairs[p].rejected_by_cycle = rejected.cycle;
   }

@@ -10,6 +10,7 @@
 #include "sfm_pruning/report/epipolar_image.hpp"
 #include "sfm_pruning/report/html_style.hpp"
 #include "sfm_pruning/report/palette.hpp"
+#include "sfm_pruning/report/removal_summary.hpp"
 #include "sfm_pruning/report/svg_builder.hpp"
 #include "sfm_pruning/report/timings_drawing.hpp"
 #include "sfm_pruning/report/top_view.hpp"
@@ -127,6 +128,40 @@ std::string GraphLegend(const RunViewGraph& graph, const RunFolder& run, bool af
   return html + "</div>\n";
 }
 
+// At most this many subgraph pairs are listed by name; the rest are counted.
+constexpr size_t kMaxListedSubgraphPairs = 12;
+
+// The removals in plain words: one line per reason with its count, subgraph pairs and measure,
+// then the subgraph pairs that lost the most edges.
+std::string RemovalSummaryHtml(const RunViewGraph& graph) {
+  const RemovalSummary summary = SummariseRemovals(graph);
+  if (summary.removed == 0) return "<p>The pruning removed no edge.</p>\n";
+  std::string html = "<p><b>The pruning removed " + std::to_string(summary.removed) + " of " +
+                     std::to_string(summary.edges) + " verified edges.</b></p>\n<table class=\"removals\">"
+                     "<tr><th>edges</th><th>removed because</th><th>subgraph pairs</th><th>measured</th></tr>\n";
+  for (const RemovalGroup& group : summary.groups) {
+    html += "<tr><td>" + std::to_string(group.edges) + "</td><td>" + EscapeXml(RemovalReasonInWords(group.reason)) +
+            " <small><code>" + EscapeXml(group.reason) + "</code></small></td><td>" +
+            std::to_string(group.subgraph_pairs) + "</td><td>" + EscapeXml(GroupMeasureInWords(group)) + "</td></tr>\n";
+  }
+  html += "</table>\n<table class=\"removals\"><tr><th>subgraph pair</th><th>removed</th><th>kept</th>"
+          "<th>most removed because</th></tr>\n";
+  for (size_t k = 0; k < summary.pairs.size() && k < kMaxListedSubgraphPairs; ++k) {
+    const SubgraphPairRemovals& pair = summary.pairs[k];
+    const std::string name = pair.a < 0 ? "outside the partition"
+                                        : std::to_string(pair.a + 1) + " - " + std::to_string(pair.b + 1);
+    html += "<tr><td>" + name + "</td><td>" + std::to_string(pair.removed) + "</td><td>" + std::to_string(pair.kept) +
+            "</td><td>" + EscapeXml(RemovalReasonInWords(pair.main.reason) + " (" + GroupMeasureInWords(pair.main) + ")") +
+            "</td></tr>\n";
+  }
+  html += "</table>\n";
+  if (summary.pairs.size() > kMaxListedSubgraphPairs) {
+    html += "<p class=\"note\">and " + std::to_string(summary.pairs.size() - kMaxListedSubgraphPairs) +
+            " more subgraph pairs with removed edges (view_graph.json lists every edge).</p>\n";
+  }
+  return html;
+}
+
 std::string GraphSection(const std::vector<RunPage>& pages, uint64_t seed) {
   // The run that pruned (its graph before pruning is the other runs' graph too).
   const RunPage* page = nullptr;
@@ -170,9 +205,10 @@ std::string GraphSection(const std::vector<RunPage>& pages, uint64_t seed) {
                  "Nodes are views coloured by the accepted subgraph of the recursive partition (" +
                      EscapeXml(page->label) +
                      "); both panels share one seeded force-directed layout of the pruned graph, so subgraphs "
-                     "form clusters and the removed inter-subgraph edges show as dashed red chords. Hover for "
-                     "image names, inliers and the measured error of each cut. " + toggle,
-                 "<div class=\"cols\"><div class=\"col\">" + title_before + before + GraphLegend(graph, *page->run, false) +
+                     "form clusters. The removed edges between two subgraphs show as one dashed red bundle per "
+                     "pair of subgraphs, as wide as the log of its count. Hover for image names, inliers and "
+                     "the measured error of each cut. " + toggle,
+                 RemovalSummaryHtml(graph) + "<div class=\"cols\"><div class=\"col\">" + title_before + before + GraphLegend(graph, *page->run, false) +
                      "</div><div class=\"col\">" + title_after + after + GraphLegend(graph, *page->run, true) +
                      "</div></div>\n");
 }

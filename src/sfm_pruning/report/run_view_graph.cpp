@@ -51,6 +51,7 @@ RunViewGraph MakeRunViewGraph(const std::string& engine, const ViewGraph& graph,
       record.reason = EdgeInvalidReasonName(cut->second->invalidation.reason);
       record.value = cut->second->invalidation.value;
       record.threshold = cut->second->invalidation.threshold;
+      record.measure = EdgeMeasureName(cut->second->invalidation.Measure());
     }
     out.edges.push_back(record);
   });
@@ -69,6 +70,7 @@ void WriteRunViewGraph(const RunViewGraph& graph, const std::filesystem::path& p
       record["reason"] = edge.reason;
       record["value"] = edge.value;
       record["threshold"] = edge.threshold;
+      record["measure"] = edge.measure;
     }
     edges.push_back(std::move(record));
   }
@@ -103,6 +105,8 @@ RunViewGraph ReadRunViewGraph(const std::filesystem::path& path) {
         record.reason = edge.at("reason").get<std::string>();
         record.value = edge.at("value").get<double>();
         record.threshold = edge.at("threshold").get<double>();
+        // Absent from files written before the measure was recorded.
+        record.measure = edge.value("measure", std::string());
       }
       graph.edges.push_back(record);
     }

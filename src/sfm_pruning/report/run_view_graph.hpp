@@ -29,8 +29,9 @@ struct RunGraphEdge {
   size_t inliers = 0;
   bool removed = false;  // cut by the pruning
   std::string reason;    // EdgeInvalidReasonName of the cut, empty when kept
-  double value = 0.0;    // measured error of the cut, in the reason's unit
+  double value = 0.0;    // measured error of the cut, in the unit of `measure`
   double threshold = 0.0;
+  std::string measure;  // EdgeMeasureName of the cut ("degrees", ...); empty in older files
 };
 
 struct RunViewGraph {
@@ -48,7 +49,7 @@ RunViewGraph MakeRunViewGraph(const std::string& engine, const ViewGraph& graph,
                               const ViewGraphPruningReport* pruning);
 
 // JSON: {"engine", "num_subgraphs", "views": [{"view_id", "image", "subgraph"}],
-//        "edges": [{"i", "j", "inliers", "removed", ["reason", "value", "threshold"]}]}. Atomic.
+//        "edges": [{"i", "j", "inliers", "removed", ["reason", "value", "threshold", "measure"]}]}. Atomic.
 void WriteRunViewGraph(const RunViewGraph& graph, const std::filesystem::path& path);
 
 // Throws Error naming the file for unreadable JSON, a missing field, an edge whose ends are not

@@ -3,9 +3,12 @@
 #include <algorithm>
 #include <cmath>
 #include <map>
+#include <optional>
+#include <utility>
 
 #include "sfm_pruning/report/graph_layout.hpp"
 #include "sfm_pruning/report/palette.hpp"
+#include "sfm_pruning/report/removal_summary.hpp"
 #include "sfm_pruning/report/svg_builder.hpp"
 
 namespace sfm_pruning {
@@ -26,10 +29,26 @@ std::string EdgeTooltip(const RunViewGraph& graph, const RunGraphEdge& edge, siz
   std::string text = graph.views[a].image + " - " + graph.views[b].image + ": " + std::to_string(edge.inliers) +
                      " inliers";
   if (edge.removed) {
-    text += "; removed (" + edge.reason + ": " + FormatNumber(edge.value, 2) + " > " + FormatNumber(edge.threshold, 2) +
-            ")";
+    text += "; removed because " + RemovalReasonInWords(edge.reason) + " (" +
+            MeasureValueInWords(edge.reason, edge.measure, edge.value) + ", bound " +
+            MeasureValueInWords(edge.reason, edge.measure, edge.threshold) + ")";
   }
   return text;
+}
+
+std::string BundleTooltip(const SubgraphPairRemovals& pair) {
+  return "subgraph " + std::to_string(pair.a + 1) + " - subgraph " + std::to_string(pair.b + 1) + ": " +
+         std::to_string(pair.removed) + " edges removed, " + std::to_string(pair.kept) + " kept; " +
+         (pair.main.edges == pair.removed ? "all" : std::to_string(pair.main.edges)) + " because " +
+         RemovalReasonInWords(pair.main.reason) + " (" + GroupMeasureInWords(pair.main) + ")";
+}
+
+// Subgraph pair of a removed edge whose ends lie in two different accepted subgraphs, else nullopt.
+std::optional<std::pair<int, int>> BundledPair(const RunViewGraph& graph, const std::map<IndexT, size_t>& index,
+                                               const RunGraphEdge& edge) {
+  const int a = graph.views[index.at(edge.i)].subgraph, b = graph.views[index.at(edge.j)].subgraph;
+  if (!edge.removed || a < 0 || b < 0 || a == b) return std::nullopt;
+  return std::make_pair(std::min(a, b), std::max(a, b));
 }
 
 }  // namespace
@@ -89,9 +108,39 @@ std::string DrawViewGraphSvg(const RunViewGraph& graph, const std::vector<Eigen:
       draw_edge(edge, inside ? SubgraphColor(sa).Hex() : report_colors::kKept.Hex(), inside ? 1.3 : 0.6, "");
     }
     svg.EndGroup();
+    // Removed edges between two subgraphs: one bundle per subgraph pair, from the mean position of
+    // its ends in one subgraph to that in the other, as wide as the log of its count. Others alone.
     svg.BeginGroup("class=\"edges removed-edges\"");
+    struct Bundle {
+      Eigen::Vector2d end_a = Eigen::Vector2d::Zero(), end_b = Eigen::Vector2d::Zero();
+      size_t count = 0;
+    };
+    std::map<std::pair<int, int>, Bundle> bundles;
     for (const RunGraphEdge& edge : graph.edges) {
-      if (edge.removed) draw_edge(edge, report_colors::kRemoved.Hex(), 0.9, " stroke-dasharray=\"4 3\"");
+      if (!edge.removed) continue;
+      const std::optional<std::pair<int, int>> pair = BundledPair(graph, index, edge);
+      if (!pair) {
+        draw_edge(edge, report_colors::kRemoved.Hex(), 0.9, " stroke-dasharray=\"4 3\"");
+        continue;
+      }
+      size_t a = index.at(edge.i), b = index.at(edge.j);
+      if (graph.views[a].subgraph != pair->first) std::swap(a, b);
+      Bundle& bundle = bundles[*pair];
+      bundle.end_a += at(a);
+      bundle.end_b += at(b);
+      ++bundle.count;
+    }
+    std::map<std::pair<int, int>, std::string> tooltip_of;
+    for (const SubgraphPairRemovals& pair : SummariseRemovals(graph).pairs) {
+      tooltip_of[{pair.a, pair.b}] = BundleTooltip(pair);
+    }
+    for (const auto& [pair, bundle] : bundles) {
+      const double n = static_cast<double>(bundle.count);
+      const double width = 1.0 + 1.2 * std::log2(n);
+      svg.Line(bundle.end_a / n, bundle.end_b / n,
+               "stroke=\"" + report_colors::kRemoved.Hex() + "\" stroke-width=\"" + FormatNumber(width, 2) +
+                   "\" stroke-opacity=\"0.55\" stroke-linecap=\"round\" stroke-dasharray=\"6 4\"",
+               tooltip_of[pair]);
     }
     svg.EndGroup();
   }

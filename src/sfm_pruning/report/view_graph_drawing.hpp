@@ -19,7 +19,8 @@ std::vector<Eigen::Vector2d> LayoutRunViewGraph(const RunViewGraph& graph, uint6
 
 enum class ViewGraphPanel {
   kBeforePruning,  // every verified edge in grey
-  kAfterPruning,   // kept edges (in the subgraph colour inside a subgraph), removed edges dashed red
+  kAfterPruning,   // kept edges (in the subgraph colour inside a subgraph); removed edges dashed red, one
+                   // bundle per pair of subgraphs (removal_summary.hpp)
 };
 
 // An SVG of `size` x `size` user units. Nodes are coloured by subgraph in both panels; every

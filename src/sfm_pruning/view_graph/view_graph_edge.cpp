@@ -30,4 +30,59 @@ std::string EdgeInvalidReasonName(EdgeInvalidReason reason) {
   return "unknown";
 }
 
+std::string EdgeMeasureName(EdgeMeasure measure) {
+  switch (measure) {
+    case EdgeMeasure::kOfReason:
+      return "unspecified";
+    case EdgeMeasure::kInliers:
+      return "inliers";
+    case EdgeMeasure::kInlierRatio:
+      return "inlier_ratio";
+    case EdgeMeasure::kDegrees:
+      return "degrees";
+    case EdgeMeasure::kTranslationFraction:
+      return "translation_fraction";
+    case EdgeMeasure::kScaleRatio:
+      return "scale_ratio";
+    case EdgeMeasure::kBrokenLoops:
+      return "broken_loops";
+    case EdgeMeasure::kTrust:
+      return "trust";
+    case EdgeMeasure::kAgreeingShare:
+      return "agreeing_share";
+    case EdgeMeasure::kMatchesLeft:
+      return "matches_left";
+    case EdgeMeasure::kCorrespondences:
+      return "correspondences";
+    case EdgeMeasure::kVotingEdges:
+      return "voting_edges";
+  }
+  return "unspecified";
+}
+
+EdgeMeasure DefaultEdgeMeasure(EdgeInvalidReason reason) {
+  switch (reason) {
+    case EdgeInvalidReason::kTooFewInliers:
+      return EdgeMeasure::kInliers;
+    case EdgeInvalidReason::kLowInlierRatio:
+      return EdgeMeasure::kInlierRatio;
+    case EdgeInvalidReason::kRotationResidual:
+    case EdgeInvalidReason::kInterSubgraphInconsistent:
+    case EdgeInvalidReason::kUnverifiedRotation:
+      return EdgeMeasure::kDegrees;
+    case EdgeInvalidReason::kSubgraphLoopInconsistent:
+      return EdgeMeasure::kBrokenLoops;
+    case EdgeInvalidReason::kUnverifiedSubgraphPair:
+      return EdgeMeasure::kTrust;
+    case EdgeInvalidReason::kModelDisagreement:
+      return EdgeMeasure::kAgreeingShare;
+    case EdgeInvalidReason::kLandmarkDisagreement:
+      return EdgeMeasure::kMatchesLeft;
+    case EdgeInvalidReason::kNone:
+    case EdgeInvalidReason::kOther:
+      return EdgeMeasure::kOfReason;
+  }
+  return EdgeMeasure::kOfReason;
+}
+
 }  // namespace sfm_pruning

@@ -18,10 +18,11 @@ enum class EdgeInvalidReason {
   kTooFewInliers,              // value: inlier count
   kLowInlierRatio,             // value: inliers / putative matches
   kRotationResidual,           // value: deg between R_ij and the averaged rotations
-  kInterSubgraphInconsistent,  // value: deg (or relative translation error) of the RANSAC vote
+  kInterSubgraphInconsistent,  // value: deg (or, measure kTranslationFraction, the relative translation
+                               // error) of the RANSAC vote
   kSubgraphLoopInconsistent,   // value: inconsistent subgraph loops of its pair, threshold: consistent ones
                                // (triangle vote); or the measure that broke its cycle and its bound
-                               // (trusted forest: degrees, scale ratio or translation fraction)
+                               // (trusted forest: kDegrees, kScaleRatio or kTranslationFraction)
   kUnverifiedSubgraphPair,     // value: trust of its pair, threshold: 0 (redundant, no transform to verify it)
   kModelDisagreement,          // value: share of its matches the pruned model transfers, threshold: the
                                // share required (pruning/model_edge_audit.hpp)
@@ -35,12 +36,38 @@ enum class EdgeInvalidReason {
 // "too_few_inliers", ...: snake_case, as written to reports.
 std::string EdgeInvalidReasonName(EdgeInvalidReason reason);
 
-// Why an edge was cut: the reason, the measured quantity and the threshold it was held to,
-// in the unit the reason documents (degrees for angles).
+// What an invalidation's value and threshold measure. Most reasons have one measure
+// (DefaultEdgeMeasure); a test that can fail on one of several measures (a cycle of subgraphs:
+// rotation, scale or translation) names the one that failed.
+enum class EdgeMeasure {
+  kOfReason,             // the reason's own measure (DefaultEdgeMeasure)
+  kInliers,              // inlier matches
+  kInlierRatio,          // inliers / putative matches
+  kDegrees,              // an angle
+  kTranslationFraction,  // a displacement over the length it is held to (a baseline, a loop's mean side)
+  kScaleRatio,           // the larger of two scales over the smaller
+  kBrokenLoops,          // value: subgraph triangles its pair breaks, threshold: those it closes
+  kTrust,                // pair trust (pruning/pair_trust.hpp): 1 = as distinctive as a true edge
+  kAgreeingShare,        // share of the matches whose landmark projects onto the partner feature
+  kMatchesLeft,          // matches left after a match-level check, threshold: the minimum kept
+  kCorrespondences,      // 2D-3D correspondences that could place the edge, threshold: the minimum
+  kVotingEdges,          // edges between the edge's two subgraphs, threshold: the minimum for a vote
+};
+
+// "degrees", "translation_fraction", ...: snake_case, as written to view_graph.json.
+std::string EdgeMeasureName(EdgeMeasure measure);
+// The measure of a reason's value when its producer does not name one (kOfReason for kNone, kOther).
+EdgeMeasure DefaultEdgeMeasure(EdgeInvalidReason reason);
+
+// Why an edge was cut: the reason, the measured quantity and the threshold it was held to, in the
+// unit of `Measure()`.
 struct EdgeInvalidation {
   EdgeInvalidReason reason = EdgeInvalidReason::kNone;
   double value = 0.0;
   double threshold = 0.0;
+  EdgeMeasure measure = EdgeMeasure::kOfReason;
+
+  EdgeMeasure Measure() const { return measure == EdgeMeasure::kOfReason ? DefaultEdgeMeasure(reason) : measure; }
 };
 
 struct ViewGraphEdge {

@@ -147,7 +147,8 @@ nlohmann::json PruningReportJson(const sfm_pruning::ViewGraphPruningReport& prun
                        {"verdict", InterSubgraphVerdictName(edge.verdict)},
                        {"reason", EdgeInvalidReasonName(edge.invalidation.reason)},
                        {"value", edge.invalidation.value},
-                       {"threshold", edge.invalidation.threshold}});
+                       {"threshold", edge.invalidation.threshold},
+                       {"measure", EdgeMeasureName(edge.invalidation.Measure())}});
   }
   nlohmann::json audit = nlohmann::json::array();
   for (const EdgeAgreement& agreement : pruning.audit) {
