@@ -292,7 +292,7 @@ TEST(EstimateGlobalRotations, ReportsProgressPerIteration) {
 }
 
 // Scale check at 2,000 views / ~12,000 edges (a dense 6000 x 6000 system would take far
-// longer than this whole test). The 10,000-view benchmark is in rotation_benchmark_test.cpp.
+// longer than this whole test). The 10,000-view timings are bench/cpp/rotation_averaging_bench.cpp.
 TEST(EstimateGlobalRotations, TimesTwoThousandViews) {
   RotationScene scene = MakeRotationScene(SceneOptions(2000, 5, 1.0, 0.1));
   const testing::TimedRotationAveraging run = testing::RunTimedRotationAveraging(&scene);
