@@ -62,7 +62,6 @@ CONFIGS = [
     ("below the break-even the largest candidate wins", "GLOBAL_PRUNED",
      ["--prune_relative_coverage_break_even", "0"]),
     ("RANSAC sample cap 4 (the earlier cap)", "GLOBAL_PRUNED", ["--prune_max_sample_size", "4"]),
-    ("with a refit of the RANSAC winner (3 rounds)", "GLOBAL_PRUNED", ["--prune_refine_rounds", "3"]),
 ] + [
     # The additions of the repetition configuration (docs/pruning.md), each taken away alone.
     (f"without {what} (a default addition)", "GLOBAL_PRUNED", off) for what, off in [

@@ -224,28 +224,6 @@ TEST(SubgraphAlignment, BelowTheBreakEvenTheCandidatesAreComparedWithEachOther) 
   EXPECT_EQ(largest.KeptEdges(), OutnumberedTrueEdges::Sorted(pair.twin_edges));
 }
 
-TEST(SubgraphAlignment, ASelectionIsContestedByARivalTheCoverageDoesNotTellApart) {
-  const auto candidate = [](size_t consensus, bool ruled_out) {
-    AlignmentHypothesis hypothesis;
-    hypothesis.consensus_size = consensus;
-    hypothesis.ruled_out = ruled_out;
-    return hypothesis;
-  };
-  SubgraphAlignmentResult result;
-  result.hypotheses = {candidate(38, false), candidate(36, false), candidate(26, false)};
-  result.selected_hypothesis = 0;
-  EXPECT_TRUE(SelectionIsContested(result, 0.9));    // 36 >= 0.9 * 38, both admitted
-  EXPECT_FALSE(SelectionIsContested(result, 0.96));  // 36 < 0.96 * 38
-  EXPECT_FALSE(SelectionIsContested(result, 0.0));   // off
-  result.hypotheses[1].ruled_out = true;             // the coverage rules the rival out
-  EXPECT_FALSE(SelectionIsContested(result, 0.9));
-  result.hypotheses[1].ruled_out = false;
-  result.selected_hypothesis = 1;  // 36 won against 38 for another reason; 26 is no near tie
-  EXPECT_FALSE(SelectionIsContested(result, 0.8));
-  result.selected_hypothesis = -1;
-  EXPECT_FALSE(SelectionIsContested(result, 0.9));
-}
-
 TEST(SubgraphAlignment, SameSeedSameDecisions) {
   TwoSubgraphs setup;
   SubgraphAlignmentOptions options;

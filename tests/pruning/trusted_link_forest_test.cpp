@@ -133,25 +133,6 @@ TEST(TrustedLinkForest, PairsOfFewEdgesComeAfterTheOthersWhateverTheirTrust) {
   EXPECT_EQ(result.decisions[3], LinkDecision::kRedundantUnverified);  // 0.6 < 0.65, nothing verifies it
 }
 
-TEST(TrustedLinkForest, AContestedPairComesAfterTheDecisiveOnesWhateverItsTrust) {
-  // orbit_symmetric seed 4 (precise verification): a pair's RANSAC chose the mirrored transform
-  // by 38 edges to 36, its trust ranked it first, and two decisive true pairs broke its cycle.
-  const LoopScene scene(4);
-  Similarity3 mirror;  // the object's symmetry: half a turn about the vertical
-  mirror.rotation = Eigen::AngleAxisd(M_PI, Eigen::Vector3d::UnitZ()).toRotationMatrix();
-  std::vector<SubgraphPairLink> pairs = {Pair(scene, 0, 1, 0.9), Pair(scene, 2, 3, 0.9), Pair(scene, 1, 2, 0.8),
-                                         Pair(scene, 0, 3, 0.7), Pair(scene, 1, 3, 1.0, mirror)};
-  TrustedForestResult result = SelectLinksByTrustedForest(pairs, scene.subgraphs, {});
-  EXPECT_EQ(result.decisions[4], LinkDecision::kForest);  // first, by its trust
-  EXPECT_EQ(result.decisions[2], LinkDecision::kBreaksCycle);
-  pairs[4].contested = true;
-  result = SelectLinksByTrustedForest(pairs, scene.subgraphs, {});
-  EXPECT_EQ(result.decisions[2], LinkDecision::kForest);
-  EXPECT_EQ(result.decisions[3], LinkDecision::kClosesCycle);
-  EXPECT_EQ(result.decisions[4], LinkDecision::kBreaksCycle);
-  EXPECT_GT(result.cycles.at(static_cast<size_t>(result.cycle_of[4])).rotation_deg, 170.0);
-}
-
 TEST(TrustedLinkForest, LongCyclesGetThePapersLoopFactor) {
   // A ring of 7 subgraphs whose links each drift by 2 degrees: 12° around the 7-cycle closed by
   // the least trusted link, within 5° · ⌊(7 − 1) / 2⌋ = 15°, but not within the triangle's 5°.

@@ -3,19 +3,13 @@
 namespace sfm_pruning {
 
 ChainedRelativePose ChainRelativePose(const Pose& mean_pose_k1, const Pose& pose_j_in_k1,
-                                      const Pose& pose_j_in_k2, const Pose& mean_pose_k2,
-                                      ScaleApplication scale_application) {
+                                      const Pose& pose_j_in_k2, const Pose& mean_pose_k2) {
   const RelativePose c1_to_j = RelativePoseBetween(mean_pose_k1, pose_j_in_k1);
   const RelativePose j_to_c2 = RelativePoseBetween(pose_j_in_k2, mean_pose_k2);
   ChainedRelativePose chain;
   chain.rotation = j_to_c2.rotation * c1_to_j.rotation;
-  if (scale_application == ScaleApplication::kSubgraphFrame) {
-    chain.offset = j_to_c2.rotation * c1_to_j.translation;
-    chain.per_unit_scale = j_to_c2.translation;
-  } else {
-    chain.offset = j_to_c2.rotation * (c1_to_j.translation - pose_j_in_k2.translation());
-    chain.per_unit_scale = mean_pose_k2.translation();
-  }
+  chain.offset = j_to_c2.rotation * c1_to_j.translation;
+  chain.per_unit_scale = j_to_c2.translation;
   return chain;
 }
 

@@ -11,13 +11,11 @@
 //   A = RelativePoseBetween(P_c1^{k1}, P̂_j^{k1})   c1 -> j, k1 units
 //   B = RelativePoseBetween(P̂_j^{k2}, P_c2^{k2})   j -> c2, k2 units
 //   R = R_B R_A,   t(β) = R_B t_A + β t_B   =: offset + β · per_unit_scale.
-// kSubgraphFrame (default) applies S to k2's whole frame: every k2 translation is multiplied by
-// β, so only B's translation scales. This is the only reading under which t(β) does not depend
-// on where k2's origin lies; with the right β all correct edges give the same t.
-// kMeanPoseOnly is the paper's formula taken literally: only P̂_{c2}^{k2}'s centre is scaled,
-//   t(β) = R_B t_A − R_B t_j^{k2} + β t_{c2}^{k2}     (t = −R c, world-to-camera).
-// It depends on k2's origin and agrees across edges only when k2 already has k1's scale; kept
-// for ablation.
+// S is applied to k2's whole frame: every k2 translation is multiplied by β, so only B's
+// translation scales. This is the only reading under which t(β) does not depend on where k2's
+// origin lies; with the right β all correct edges give the same t. (Taken literally, the paper's
+// formula scales only P̂_{c2}^{k2}'s centre, which agrees across edges only when k2 already has
+// k1's scale.)
 #pragma once
 
 #include <optional>
@@ -30,8 +28,6 @@
 
 namespace sfm_pruning {
 
-enum class ScaleApplication { kSubgraphFrame, kMeanPoseOnly };
-
 struct ChainedRelativePose {
   Eigen::Matrix3d rotation = Eigen::Matrix3d::Identity();  // R_{c1 c2}
   Eigen::Vector3d offset = Eigen::Vector3d::Zero();          // t at β = 0
@@ -40,8 +36,7 @@ struct ChainedRelativePose {
 };
 
 ChainedRelativePose ChainRelativePose(const Pose& mean_pose_k1, const Pose& pose_j_in_k1,
-                                      const Pose& pose_j_in_k2, const Pose& mean_pose_k2,
-                                      ScaleApplication scale_application = ScaleApplication::kSubgraphFrame);
+                                      const Pose& pose_j_in_k2, const Pose& mean_pose_k2);
 
 // β* = argmin_β Σ_e |t_e(β) − t̄(β)|², t̄(β) = mean_e t_e(β). With t_e = a_e + β b_e,
 // t_e − t̄ = (a_e − ā) + β (b_e − b̄) =: δa_e + β δb_e, so the cost is the 1-D quadratic
@@ -53,7 +48,7 @@ std::optional<double> SolveChainScale(const std::vector<ChainedRelativePose>& ch
                                       double min_relative_spread = 1e-9);
 
 // The frame transform k2 -> k1 that a chained pose c1 -> c2 (rotation R̄, translation t̄ in k1
-// units) and the scale β imply under kSubgraphFrame: camera c2's coordinates in k1 units are
+// units) and the scale β imply (β scaling k2's whole frame): camera c2's coordinates in k1 units are
 // β (R_c2 X2 + t_c2) = R̄ (R_c1 X1 + t_c1) + t̄, solved for X1:
 //   X1 = β R X2 + T,   R = R_c1^T R̄^T R_c2,   T = C_c1 − R_c1^T R̄^T (β R_c2 C_c2 + t̄).
 Similarity3 FrameSimilarityOfChain(const Pose& mean_pose_k1, const Pose& mean_pose_k2,

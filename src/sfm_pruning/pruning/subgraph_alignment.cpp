@@ -16,8 +16,7 @@ using Options = SubgraphAlignmentOptions;
 
 struct Hypothesis {
   double beta = 1.0;
-  Eigen::Matrix3d mean_rotation = Eigen::Matrix3d::Identity();
-  Eigen::Vector3d mean_log_rotation = Eigen::Vector3d::Zero();  // kPaperTangentMean
+  Eigen::Matrix3d mean_rotation = Eigen::Matrix3d::Identity();  // geodesic (Karcher) mean
   Eigen::Vector3d mean_translation = Eigen::Vector3d::Zero();
 };
 
@@ -34,7 +33,7 @@ struct Deviation {
 // β*, t̄ and r̄ of a sample; empty when the sample has no scale information or β* ≤ 0 (a negative
 // scale would mirror k2).
 std::optional<Hypothesis> FitHypothesis(const std::vector<ChainedRelativePose>& chains,
-                                        const std::vector<size_t>& sample, const Options& options) {
+                                        const std::vector<size_t>& sample) {
   std::vector<ChainedRelativePose> sampled;
   sampled.reserve(sample.size());
   for (size_t index : sample) sampled.push_back(chains[index]);
@@ -45,25 +44,19 @@ std::optional<Hypothesis> FitHypothesis(const std::vector<ChainedRelativePose>& 
   std::vector<Eigen::Matrix3d> rotations;
   for (const ChainedRelativePose& chain : sampled) {
     hypothesis.mean_translation += chain.Translation(*beta);
-    hypothesis.mean_log_rotation += LogSO3(chain.rotation);
     rotations.push_back(chain.rotation);
   }
   hypothesis.mean_translation /= static_cast<double>(sampled.size());
-  hypothesis.mean_log_rotation /= static_cast<double>(sampled.size());
-  if (options.rotation_deviation == Options::RotationDeviation::kGeodesicMean) {
-    hypothesis.mean_rotation = GeodesicMeanRotation(rotations).rotation;
-  } else {
-    hypothesis.mean_rotation = ExpSO3(hypothesis.mean_log_rotation);
-  }
+  hypothesis.mean_rotation = GeodesicMeanRotation(rotations).rotation;
   return hypothesis;
 }
 
-Deviation MeasureDeviation(const ChainedRelativePose& chain, const Hypothesis& hypothesis, const Options& options) {
+// E_r is the angle to the geodesic mean, not the paper's |Log(R_e) − mean Log(R_s)|: the two agree
+// to first order, but the Log jumps from ω to −ω near 180° and a chained rotation c1 -> c2 can be
+// anything.
+Deviation MeasureDeviation(const ChainedRelativePose& chain, const Hypothesis& hypothesis) {
   Deviation deviation;
-  deviation.rotation_deg =
-      options.rotation_deviation == Options::RotationDeviation::kGeodesicMean
-          ? RadToDeg(RotationAngleBetween(hypothesis.mean_rotation, chain.rotation))
-          : RadToDeg((LogSO3(chain.rotation) - hypothesis.mean_log_rotation).norm());
+  deviation.rotation_deg = RadToDeg(RotationAngleBetween(hypothesis.mean_rotation, chain.rotation));
   deviation.translation = (chain.Translation(hypothesis.beta) - hypothesis.mean_translation).norm();
   return deviation;
 }
@@ -80,7 +73,7 @@ Consensus CountConsensus(const std::vector<ChainedRelativePose>& chains, const H
   consensus.inlier.assign(chains.size(), false);
   const double translation_threshold = options.max_translation_deviation_fraction * hypothesis.mean_translation.norm();
   for (size_t k = 0; k < chains.size(); ++k) {
-    const Deviation deviation = MeasureDeviation(chains[k], hypothesis, options);
+    const Deviation deviation = MeasureDeviation(chains[k], hypothesis);
     if (deviation.rotation_deg <= options.max_rotation_deviation_deg && deviation.translation <= translation_threshold) {
       consensus.inlier[k] = true;
       ++consensus.count;
@@ -112,23 +105,6 @@ struct Candidate {
   bool enumerated = false;  // that run tried every sample (RansacSamples)
 };
 
-// Refit on the whole consensus while it grows, at most Options::refine_rounds times.
-void RefineOnConsensus(const std::vector<ChainedRelativePose>& chains, const Options& options, Candidate* candidate) {
-  const int rounds = options.refine_rounds;
-  for (int round = 0; round < rounds; ++round) {
-    std::vector<size_t> members;
-    for (size_t k = 0; k < chains.size(); ++k) {
-      if (candidate->consensus.inlier[k]) members.push_back(k);
-    }
-    const std::optional<Hypothesis> refit = FitHypothesis(chains, members, options);
-    if (!refit) return;
-    Consensus consensus = CountConsensus(chains, *refit, options);
-    if (consensus.count <= candidate->consensus.count) return;
-    candidate->hypothesis = *refit;
-    candidate->consensus = std::move(consensus);
-  }
-}
-
 // One RANSAC run whose samples are drawn from `pool` (indices into chains); the consensus is
 // counted over every chain. Empty when every sample was degenerate.
 std::optional<Candidate> RansacOverPool(const std::vector<ChainedRelativePose>& chains,
@@ -142,7 +118,7 @@ std::optional<Candidate> RansacOverPool(const std::vector<ChainedRelativePose>& 
   for (int iteration = 0; iteration < samples.size(); ++iteration) {
     std::vector<size_t> sample = samples.Next();
     for (size_t& k : sample) k = pool[k];  // the pool is ascending, so the sample stays sorted
-    const std::optional<Hypothesis> hypothesis = FitHypothesis(chains, sample, options);
+    const std::optional<Hypothesis> hypothesis = FitHypothesis(chains, sample);
     if (!hypothesis) continue;
     ++result->num_valid_hypotheses;
     Consensus consensus = CountConsensus(chains, *hypothesis, options);
@@ -154,7 +130,6 @@ std::optional<Candidate> RansacOverPool(const std::vector<ChainedRelativePose>& 
   if (best) {
     best->num_samples = samples.size();
     best->enumerated = samples.enumerated();
-    RefineOnConsensus(chains, options, &*best);
   }
   return best;
 }
@@ -307,7 +282,7 @@ void RunRansac(const std::vector<ChainedRelativePose>& chains, const std::vector
   const double translation_threshold = options.max_translation_deviation_fraction * best->mean_translation.norm();
   for (size_t k = 0; k < n; ++k) {
     InterSubgraphEdgeDecision& decision = result->edges[voter_edge_index[k]];
-    const Deviation deviation = MeasureDeviation(chains[k], *best, options);
+    const Deviation deviation = MeasureDeviation(chains[k], *best);
     decision.rotation_deviation_deg = deviation.rotation_deg;
     decision.translation_deviation = deviation.translation;
     decision.translation_threshold = translation_threshold;
@@ -412,8 +387,7 @@ SubgraphAlignmentResult AlignSubgraphPair(const ViewGraph& graph, const Subgraph
     decision.j_posed_in_k2 = pose_j_in_k2 != k2.poses.end();
     decision.voted = decision.placement.status == EdgePlacementStatus::kPlaced && decision.j_posed_in_k2;
     if (decision.voted) {
-      chains.push_back(ChainRelativePose(mean_k1, decision.placement.pose_j_in_k1, pose_j_in_k2->second, mean_k2,
-                                         options.scale_application));
+      chains.push_back(ChainRelativePose(mean_k1, decision.placement.pose_j_in_k1, pose_j_in_k2->second, mean_k2));
       coverage.push_back({decision.placement.num_expected_landmarks, decision.placement.num_matched_landmarks});
       voter_edge_index.push_back(result.edges.size());
     } else {
@@ -430,30 +404,12 @@ SubgraphAlignmentResult AlignSubgraphPair(const ViewGraph& graph, const Subgraph
     return result;
   }
   RunRansac(chains, coverage, voter_edge_index, options, &result);
-  if (result.status == SubgraphAlignmentStatus::kAligned &&
-      options.scale_application == ScaleApplication::kSubgraphFrame) {
+  if (result.status == SubgraphAlignmentStatus::kAligned) {
     result.has_frame_transform = true;
     result.k2_to_k1 =
         FrameSimilarityOfChain(mean_k1, mean_k2, result.mean_rotation, result.mean_translation, result.beta);
   }
   return result;
-}
-
-bool SelectionIsContested(const SubgraphAlignmentResult& alignment, double ratio) {
-  if (!(ratio > 0.0) || alignment.selected_hypothesis < 0) return false;
-  const std::vector<AlignmentHypothesis>& candidates = alignment.hypotheses;
-  const AlignmentHypothesis& selected = candidates[static_cast<size_t>(alignment.selected_hypothesis)];
-  // A candidate the coverage preferred over a larger one was chosen for a reason (hence rivals
-  // larger than the selection do not count).
-  for (size_t h = 0; h < candidates.size(); ++h) {
-    const AlignmentHypothesis& rival = candidates[h];
-    if (static_cast<int>(h) == alignment.selected_hypothesis) continue;
-    const bool same_verdict = rival.ruled_out == selected.ruled_out;
-    const double size = static_cast<double>(rival.consensus_size);
-    const double selected_size = static_cast<double>(selected.consensus_size);
-    if (same_verdict && size <= selected_size && size >= ratio * selected_size) return true;
-  }
-  return false;
 }
 
 }  // namespace sfm_pruning

@@ -9,9 +9,9 @@
 //      min_sample_size), fit β* and the sample means (rotation r̄, translation t̄), and count
 //      every voting edge with E_r ≤ max_rotation_deviation_deg and
 //      E_t = |t_e(β*) − t̄| ≤ max_translation_deviation_fraction · |t̄|. The largest consensus
-//      set wins (ties: lowest total normalised error, then the earliest round), optionally refitted
-//      on its whole consensus (refine_rounds); with kMatchCoverage further runs on the leftover
-//      edges give more candidates (hypothesis_selection). The voting edges outside the chosen
+//      set wins (ties: lowest total normalised error, then the earliest round); with
+//      kMatchCoverage further runs on the leftover edges give more candidates
+//      (hypothesis_selection). E_r is the angle to the geodesic mean of the sample's rotations. The voting edges outside the chosen
 //      consensus are removed, each with its measured E_r / E_t under that hypothesis.
 // The function only decides; invalidating the removed edges in the view graph is the caller's
 // (InterSubgraphInvalidation gives the EdgeInvalidation to record).
@@ -34,14 +34,6 @@ namespace sfm_pruning {
 
 struct SubgraphAlignmentOptions {
   EdgePlacementOptions placement;
-  ScaleApplication scale_application = ScaleApplication::kSubgraphFrame;
-
-  // How E_r is measured. kGeodesicMean (default): E_r = angle(R̄, R_e), R̄ the Karcher mean of
-  // the sample's chained rotations. kPaperTangentMean: the paper's |Log(R_e) − mean Log(R_s)|,
-  // identical to first order but wrong when the chained rotation is near 180° (the Log jumps
-  // from ω to −ω there, and c1 -> c2 is a physical rotation that can be anything).
-  enum class RotationDeviation { kGeodesicMean, kPaperTangentMean };
-  RotationDeviation rotation_deviation = RotationDeviation::kGeodesicMean;
 
   int num_iterations = 30;          // paper: 30 (ablation 20 / 40)
   double sample_fraction = 0.4;     // of the voting edges, rounded down
@@ -54,13 +46,6 @@ struct SubgraphAlignmentOptions {
   double max_rotation_deviation_deg = 5.0;           // E_r
   double max_translation_deviation_fraction = 0.05;  // E_t / |t̄|
   uint64_t seed = 0;                // RANSAC sampler (std::mt19937_64)
-  // Local optimisation of each RANSAC run's winner (not in the paper): β and the means are fitted
-  // again on its whole consensus and the edges counted again, while that enlarges the consensus
-  // (at most refine_rounds times). A sample of 2–4 edges fixes t̄ with the noise of those few
-  // PnP placements; on real images correct edges then miss the 0.05·|t̄| bound by a little
-  // (books: 11 of 28 correct edges of one pair at E_t 0.051–0.18 of |t̄|). Off by default (the
-  // paper's plain RANSAC): on books and orbit_symmetric it changed no AUC (bench ablations).
-  int refine_rounds = 0;
 
   // Which RANSAC hypothesis decides the pair. kLargestConsensus: the one with the most
   // consistent edges (the paper). kMatchCoverage: RANSAC is run again on the edges outside the
@@ -176,8 +161,7 @@ struct SubgraphAlignmentResult {
   Eigen::Vector3d mean_translation = Eigen::Vector3d::Zero();
   // The frame transform the selected hypothesis implies, X_k1 = k2_to_k1(X_k2)
   // (FrameSimilarityOfChain), and its consensus size: the input of the loop check across pairs
-  // (subgraph_loop_consistency.hpp). Only under ScaleApplication::kSubgraphFrame, the one reading
-  // under which the chained poses define a frame transform.
+  // (subgraph_loop_consistency.hpp). Set for every aligned pair.
   bool has_frame_transform = false;
   Similarity3 k2_to_k1;
   size_t consensus_size = 0;
@@ -198,13 +182,6 @@ struct SubgraphAlignmentResult {
 // correspondences (cannot vote) or of voting edges (few edges). reason kNone for a kept edge.
 EdgeInvalidation InterSubgraphInvalidation(const InterSubgraphEdgeDecision& decision,
                                            const SubgraphAlignmentOptions& options);
-
-// Whether the selected candidate won a near tie on consensus size alone: another candidate, no
-// larger and at least `ratio` times its consensus, has the same AlignmentHypothesis::ruled_out
-// verdict (a candidate the coverage preferred was chosen for a reason). Never with ratio <= 0.
-// On a symmetric object the true and the mirrored transform can be found with 38 and 36 edges,
-// both below the break-even (orbit_symmetric, precise verification, seed 4): a coin toss.
-bool SelectionIsContested(const SubgraphAlignmentResult& alignment, double ratio);
 
 // Decides the connecting edges of (k1, k2) in `graph`. `views_and_intrinsics` supplies the views
 // and intrinsics of the j images, `features` their keypoints.

@@ -57,13 +57,6 @@ struct SubgraphLoopOptions {
   // kTrustedForest: pairs of fewer connecting edges enter Kruskal's order after all the others (the
   // inter-subgraph RANSAC's min_edges_for_ransac: below it a pair has no majority of its own).
   size_t min_edges_for_trust = 3;
-  // kTrustedForest: a pair whose RANSAC selection was contested (SelectionIsContested with this
-  // ratio: a rival candidate of at least this share of its consensus that the coverage does not
-  // rule out differently) enters Kruskal's order after the uncontested pairs of its group. 0 = off
-  // (the default). Why: its trust is the same whichever candidate won, so a coin toss can enter
-  // the forest above decisive pairs and make them break its cycle (orbit_symmetric seed 4 under
-  // the precise verification: a 38-to-36 twin selection above two true pairs; docs/pruning.md).
-  double contested_candidate_ratio = 0.0;
   // Measured on books (real images): the closing triangle turns by 1.6–3.1° and moves a's centre
   // by 0.08–0.15 of its side, the triangles through the doppelganger pair by 53–55° and 1.4–1.5.
   // The scale of a pair is the least certain part of its transform (it comes from the spread of

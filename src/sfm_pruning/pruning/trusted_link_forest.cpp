@@ -63,7 +63,6 @@ TrustedForestResult SelectLinksByTrustedForest(const std::vector<SubgraphPairLin
     const bool a_enough = pairs[a].num_edges >= options.min_edges_for_trust;
     const bool b_enough = pairs[b].num_edges >= options.min_edges_for_trust;
     if (a_enough != b_enough) return a_enough;
-    if (pairs[a].contested != pairs[b].contested) return !pairs[a].contested;
     if (pairs[a].trust != pairs[b].trust) return pairs[a].trust > pairs[b].trust;
     return pairs[a].support > pairs[b].support;
   });

@@ -10,8 +10,7 @@
 // its inliers, or its match coverage) ranks the true pairs first.
 //
 // Kruskal's order, most trusted pair first among the pairs of at least min_edges_for_trust
-// connecting edges, then among the others; within each group a contested pair (its RANSAC's
-// selection was a near tie, SubgraphLoopOptions::contested_candidate_ratio) after the others.
+// connecting edges, then among the others.
 // (The trust of one or two edges is the noisiest, and such a pair seldom has a transform: in the
 // forest it leaves every cycle through it unverifiable. castle-P19 lost a 16-edge true pair that
 // way to a one-edge pair of trust 1.49.)
@@ -45,7 +44,6 @@ struct SubgraphPairLink {
   size_t support = 0;  // edges the pair keeps; breaks ties of trust (more first)
   double relative_coverage = -1.0;  // PairTrust::RelativeCoverageOf; negative: not measured
   size_t num_edges = 0;             // connecting edges of the pair, kept or not
-  bool contested = false;  // SelectionIsContested: enters after the uncontested pairs of its group
 };
 
 enum class LinkDecision {

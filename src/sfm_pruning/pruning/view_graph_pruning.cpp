@@ -149,8 +149,7 @@ std::vector<PairVerdict> JudgeAgainstTrustedForest(const std::vector<std::pair<i
     const bool has_transform = HasUsableTransform(alignment);
     links[p] = {pairs[p].first, pairs[p].second, has_transform, alignment.k2_to_k1, trust[p],
                 has_transform ? alignment.consensus_size : alignment.edges.size(), coverage[p],
-                alignment.edges.size(), SelectionIsContested(alignment, options.contested_candidate_ratio)};
-    out->pairs[p].contested = links[p].contested;
+                alignment.edges.size()};
   }
   const TrustedForestResult forest = SelectLinksByTrustedForest(links, frames, options);
   out->cycles = forest.cycles;

@@ -107,7 +107,6 @@ struct SubgraphPairReport {
   double coverage = -1.0;
   bool judged_by_forest = false;
   LinkDecision forest_decision = LinkDecision::kForest;
-  bool contested = false;  // SelectionIsContested (SubgraphLoopOptions::contested_candidate_ratio)
   // kKeptUnverified pairs under ViewGraphPruningOptions::unverified_rotation: the median rotation
   // error of its kept edges against the rest (-1: not measured), and whether that cut the pair.
   double unverified_rotation_error_deg = -1.0;

@@ -144,10 +144,6 @@ void AddPruningOptions(CLI::App* cmd, sfm_pruning::ViewGraphPruningOptions* opti
                     "A pair without a supported hypothesis keeps only the largest set of edges that agree on "
                     "the rotation between the subgraphs (false: all its voting edges, the paper)")
       ->capture_default_str();
-  group->add_option("--prune_refine_rounds", alignment.refine_rounds,
-                    "Refits of a RANSAC winner on its whole consensus (0: the paper's plain RANSAC)")
-      ->check(NonNegativeValue())
-      ->capture_default_str();
 
   // The model's audit of the pruning (not in the paper; docs/pruning.md).
   sfm_pruning::ModelEdgeAuditOptions& audit = options->audit;
@@ -234,12 +230,6 @@ void AddPruningOptions(CLI::App* cmd, sfm_pruning::ViewGraphPruningOptions* opti
       ->capture_default_str();
   group->add_option("--prune_min_edges_for_trust", loops.min_edges_for_trust,
                     "trusted_forest: subgraph pairs of fewer connecting edges are ranked after all the others")
-      ->capture_default_str();
-  group->add_option("--prune_contested_ratio", loops.contested_candidate_ratio,
-                    "trusted_forest: a pair whose RANSAC found a rival candidate of at least this share of the "
-                    "selected consensus, which the coverage does not tell apart, is ranked after the decisive "
-                    "pairs (0: off; docs/pruning.md)")
-      ->check(RangeValue(0.0, 1.0))
       ->capture_default_str();
   using LinkTrust = sfm_pruning::PairTrustMeasure;
   group->add_option("--prune_link_trust", options->link_trust,

@@ -111,7 +111,6 @@ nlohmann::json PruningReportJson(const sfm_pruning::ViewGraphPruningReport& prun
                      {"coverage", pair.coverage}});
     if (pair.judged_by_forest) {
       pairs.back()["forest_decision"] = LinkDecisionName(pair.forest_decision);
-      pairs.back()["contested"] = pair.contested;
     }
     if (pair.unverified_rotation_error_deg >= 0.0) {
       pairs.back()["unverified_rotation_error_deg"] = pair.unverified_rotation_error_deg;

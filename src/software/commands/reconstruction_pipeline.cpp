@@ -77,7 +77,6 @@ nlohmann::json TimingsJson(const EngineSettings& settings, const sfm_pruning::Vi
     json["prune_bisect_unsplittable"] = settings.pruning.partition.bisect_unsplittable;
     json["prune_baseline_ratio_factor"] = settings.pruning.partition.consistency.max_baseline_ratio_factor;
     json["prune_trust_prior_edges"] = settings.pruning.trust_prior_edges;
-    json["prune_contested_ratio"] = settings.pruning.loops.contested_candidate_ratio;
   }
   json["seed"] = settings.seed;
   json["num_threads"] = settings.num_threads;
