@@ -46,7 +46,7 @@ TEST(Cli, PruneOffersTheModelAuditButNotHowTheFinalSolveStarts) {
   const CommandResult prune_help = RunPrunesfm({"prune", "--help"});
   EXPECT_EQ(prune_help.exit_code, 0);
   EXPECT_NE(prune_help.out.find("--prune_model_audit"), std::string::npos);
-  EXPECT_NE(prune_help.out.find("--prune_unverified_max_rotation_deg"), std::string::npos);
+  EXPECT_NE(prune_help.out.find("--prune_landmark_check_deg"), std::string::npos);
   const CommandResult prune = RunPrunesfm({"prune", "--database", "/nonexistent/database.db", "--output", "/tmp/x.db",
                                            "--prune_audit_refine_final", "true"});
   EXPECT_NE(prune.exit_code, 0);

@@ -118,22 +118,20 @@ TEST(CliReconstruct, EpipolarThresholdReachesTheVerification) {
   EXPECT_NE(zero.exit_code, 0);
 }
 
-TEST(CliReconstruct, ModelAuditRotationAndLandmarkChecksLeaveACleanSceneAlone) {
+TEST(CliReconstruct, ModelAuditAndLandmarkCheckLeaveACleanSceneAlone) {
   // Every edge of a clean scene is true: the audit measures the edges between the subgraphs, finds
-  // that the first model transfers nearly all their matches, and changes nothing; no pair turns
-  // against the rotations of the rest; the subgraphs' landmarks contradict almost no match.
+  // that the first model transfers nearly all their matches, and changes nothing; the subgraphs'
+  // landmarks contradict almost no match.
   const fs::path scratch = ScratchDir("cli_reconstruct_audit");
   const fs::path out = scratch / "out";
   const CommandResult result = RunPrunesfm(
       {"run", "--database", (CleanProject() / "database.db").string(), "--image_path", (scratch / "images").string(),
        "--output_path", out.string(), "--engine", "GLOBAL_PRUNED",
-       "--prune_model_audit", "true", "--prune_unverified_max_rotation_deg", "45", "--prune_landmark_check_deg",
-       "5"});
+       "--prune_model_audit", "true", "--prune_landmark_check_deg", "5"});
   ASSERT_EQ(result.exit_code, 0) << result.err;
   EXPECT_GE(Auc3(out / "sparse" / "0", scratch), 97.0);
   const nlohmann::json timings = nlohmann::json::parse(std::ifstream(out / "timings.json"));
   EXPECT_TRUE(timings.at("prune_model_audit").get<bool>());
-  EXPECT_EQ(timings.at("prune_unverified_max_rotation_deg").get<double>(), 45.0);
   EXPECT_EQ(timings.at("prune_landmark_check_deg").get<double>(), 5.0);
   const nlohmann::json report = nlohmann::json::parse(std::ifstream(out / "pruning_report.json"));
   const nlohmann::json& check = report.at("landmark_check");
@@ -141,11 +139,6 @@ TEST(CliReconstruct, ModelAuditRotationAndLandmarkChecksLeaveACleanSceneAlone) {
   EXPECT_GT(check.at("tested").get<double>(), 0.5 * check.at("matches").get<double>());
   EXPECT_LT(check.at("dropped").get<double>(), 0.02 * check.at("matches").get<double>()) << check.dump();
   EXPECT_EQ(check.at("edges_removed").get<int>(), 0);
-  for (const nlohmann::json& pair : report.at("subgraph_pairs")) {
-    if (pair.contains("cut_by_rotation")) {
-      EXPECT_FALSE(pair.at("cut_by_rotation").get<bool>()) << pair.dump();
-    }
-  }
   const nlohmann::json& audit = report.at("model_audit");
   EXPECT_EQ(audit.at("readmitted").get<int>(), 0);
   EXPECT_EQ(audit.at("removed").get<int>(), 0);

@@ -318,7 +318,6 @@ const char* InterSubgraphVerdictName(InterSubgraphVerdict verdict) {
     case InterSubgraphVerdict::kLoopInconsistent: return "loop_inconsistent";
     case InterSubgraphVerdict::kUnverified: return "unverified";
     case InterSubgraphVerdict::kModelDisagreement: return "model_disagreement";
-    case InterSubgraphVerdict::kUnverifiedRotation: return "unverified_rotation";
     case InterSubgraphVerdict::kLandmarkDisagreement: return "landmark_disagreement";
   }
   return "unknown";

@@ -112,8 +112,6 @@ enum class InterSubgraphVerdict {
                           // against the trusted forest (trusted_link_forest.hpp)
   kModelDisagreement,     // kept by the pruning, removed by the audit against the model solved from
                           // the pruned graph (model_edge_audit.hpp)
-  kUnverifiedRotation,    // removed with its whole pair: kept unverified by the forest, refuted by a
-                          // rotation averaging of the rest (unverified_pair_rotations.hpp)
   kLandmarkDisagreement,  // kept by the pruning, but too few of its matches agree with the two
                           // subgraphs' landmarks (landmark_match_check.hpp)
 };

@@ -183,43 +183,6 @@ std::vector<PairVerdict> JudgeAgainstTrustedForest(const std::vector<std::pair<i
   return verdicts;
 }
 
-// ViewGraphPruningOptions::unverified_rotation: every kKeptUnverified pair whose kept edges turn
-// away from a rotation averaging of the rest by more than the bound loses them.
-// Their entries are appended to out->removed_edges after those of the pair decisions.
-void CutUnverifiedPairsByRotation(const UnverifiedPairRotationOptions& options,
-                                  const RotationAveragingOptions& rotation,
-                                  const std::vector<SubgraphAlignmentResult>& alignments, ViewGraph* graph,
-                                  ViewGraphPruningReport* out) {
-  std::vector<size_t> judged;
-  std::vector<std::vector<ViewPair>> groups;
-  for (size_t p = 0; p < out->pairs.size(); ++p) {
-    if (out->pairs[p].forest_decision != LinkDecision::kKeptUnverified) continue;
-    std::vector<ViewPair> kept;
-    for (const InterSubgraphEdgeDecision& decision : alignments[p].edges) {
-      const ViewPair edge = MakeViewPair(decision.placement.view_i, decision.placement.view_j);
-      if (graph->HasValidEdge(edge.first, edge.second)) kept.push_back(edge);
-    }
-    if (kept.empty()) continue;
-    judged.push_back(p);
-    groups.push_back(std::move(kept));
-  }
-  if (groups.empty()) return;
-  const std::vector<double> errors = MedianRotationErrorsAgainstTheRest(*graph, groups, rotation);
-  for (size_t g = 0; g < groups.size(); ++g) {
-    SubgraphPairReport& pair = out->pairs[judged[g]];
-    pair.unverified_rotation_error_deg = errors[g];
-    if (!(errors[g] > options.max_median_error_deg)) continue;
-    pair.cut_by_rotation = true;
-    const EdgeInvalidation why{EdgeInvalidReason::kUnverifiedRotation, errors[g], options.max_median_error_deg};
-    for (const ViewPair& edge : groups[g]) {
-      if (RemoveEdge(edge, pair.k1, pair.k2, InterSubgraphVerdict::kUnverifiedRotation, why, graph,
-                     &out->removed_edges)) {
-        ++pair.num_removed_edges;
-      }
-    }
-  }
-}
-
 // The landmark check on the edges between subgraphs, through the transforms of the pairs that have
 // one (their kept edges agree with it); edges left with too few matches are removed.
 void CheckMatchesOfAlignedPairs(const LandmarkMatchCheckOptions& options, const SfmData& views_and_intrinsics,
@@ -337,12 +300,6 @@ void PruneViewGraph(const ViewGraphPruningOptions& options, ViewGraph* graph, co
     }
   }
   out.timings.push_back({"inter-subgraph pruning", SecondsSince(start)});
-  if (options.unverified_rotation.max_median_error_deg > 0.0) {
-    start = std::chrono::steady_clock::now();
-    CutUnverifiedPairsByRotation(options.unverified_rotation, options.partition.engine.rotation, alignments, graph,
-                                 &out);
-    out.timings.push_back({"rotation check of unverified pairs", SecondsSince(start)});
-  }
   if (options.landmark_check.max_angle_deg > 0.0) {
     start = std::chrono::steady_clock::now();
     CheckMatchesOfAlignedPairs(options.landmark_check, views_and_intrinsics, features, graph, &out);

@@ -36,7 +36,6 @@
 #include "sfm_pruning/pruning/subgraph_alignment.hpp"
 #include "sfm_pruning/pruning/subgraph_loop_consistency.hpp"
 #include "sfm_pruning/pruning/trusted_link_forest.hpp"
-#include "sfm_pruning/pruning/unverified_pair_rotations.hpp"
 
 namespace sfm_pruning {
 
@@ -72,10 +71,6 @@ struct ViewGraphPruningOptions {
   // The pruning's decisions reviewed against the model solved from the pruned graph, then adjusted
   // again (on by default, not in the paper; applied by RunPrunedGlobalEngine, not PruneViewGraph).
   ModelEdgeAuditOptions audit;
-  // The pairs the trusted forest keeps unverified, judged by rotation against the rest of the pruned
-  // graph (unverified_pair_rotations.hpp; off when max_median_error_deg is 0), averaged with the
-  // rotation options of partition.engine.
-  UnverifiedPairRotationOptions unverified_rotation;
   // The kept edges between subgraphs lose the matches their subgraphs' landmarks contradict
   // (landmark_match_check.hpp; off when max_angle_deg is 0).
   LandmarkMatchCheckOptions landmark_check;
@@ -107,10 +102,6 @@ struct SubgraphPairReport {
   double coverage = -1.0;
   bool judged_by_forest = false;
   LinkDecision forest_decision = LinkDecision::kForest;
-  // kKeptUnverified pairs under ViewGraphPruningOptions::unverified_rotation: the median rotation
-  // error of its kept edges against the rest (-1: not measured), and whether that cut the pair.
-  double unverified_rotation_error_deg = -1.0;
-  bool cut_by_rotation = false;
 };
 
 struct RemovedEdge {

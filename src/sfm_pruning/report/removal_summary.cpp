@@ -110,7 +110,6 @@ std::string RemovalReasonInWords(const std::string& reason) {
        "no loop of subgraphs can check their subgraph pair and its matches are not distinctive enough to keep "
        "it unchecked"},
       {"model_disagreement", "the model solved from the pruned graph does not reproduce their matches"},
-      {"unverified_rotation", "their rotations disagree with a rotation averaging of the other edges"},
       {"landmark_disagreement", "too few of their matches agree with the two subgraphs' landmarks"},
       {"rotation_residual", "their relative rotation disagrees with the averaged rotations"},
       {"too_few_inliers", "they have too few inlier matches"},

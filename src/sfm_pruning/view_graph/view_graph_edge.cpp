@@ -20,8 +20,6 @@ std::string EdgeInvalidReasonName(EdgeInvalidReason reason) {
       return "unverified_subgraph_pair";
     case EdgeInvalidReason::kModelDisagreement:
       return "model_disagreement";
-    case EdgeInvalidReason::kUnverifiedRotation:
-      return "unverified_rotation";
     case EdgeInvalidReason::kLandmarkDisagreement:
       return "landmark_disagreement";
     case EdgeInvalidReason::kOther:
@@ -68,7 +66,6 @@ EdgeMeasure DefaultEdgeMeasure(EdgeInvalidReason reason) {
       return EdgeMeasure::kInlierRatio;
     case EdgeInvalidReason::kRotationResidual:
     case EdgeInvalidReason::kInterSubgraphInconsistent:
-    case EdgeInvalidReason::kUnverifiedRotation:
       return EdgeMeasure::kDegrees;
     case EdgeInvalidReason::kSubgraphLoopInconsistent:
       return EdgeMeasure::kBrokenLoops;

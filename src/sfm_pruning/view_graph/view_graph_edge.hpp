@@ -26,8 +26,6 @@ enum class EdgeInvalidReason {
   kUnverifiedSubgraphPair,     // value: trust of its pair, threshold: 0 (redundant, no transform to verify it)
   kModelDisagreement,          // value: share of its matches the pruned model transfers, threshold: the
                                // share required (pruning/model_edge_audit.hpp)
-  kUnverifiedRotation,         // value: median deg between its pair's edges and a rotation averaging of
-                               // the rest, threshold: the bound (pruning/unverified_pair_rotations.hpp)
   kLandmarkDisagreement,       // value: matches left after the landmark check, threshold: the minimum
                                // (pruning/landmark_match_check.hpp)
   kOther,                      // any other stage; value is stage-defined

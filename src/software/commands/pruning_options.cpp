@@ -216,12 +216,6 @@ void AddPruningOptions(CLI::App* cmd, sfm_pruning::ViewGraphPruningOptions* opti
                     "inside the subgraphs (when it can be measured)")
       ->check(NonNegativeValue())
       ->capture_default_str();
-  group->add_option("--prune_unverified_max_rotation_deg", options->unverified_rotation.max_median_error_deg,
-                    "trusted_forest: a pair kept unverified is cut when its edges turn by more than this (median, "
-                    "degrees) against a rotation averaging of the rest of the pruned graph (0: off; catches "
-                    "false loops between opposite sides of a scene)")
-      ->check(NonNegativeValue())
-      ->capture_default_str();
   group->add_option("--prune_landmark_check_deg", options->landmark_check.max_angle_deg,
                     "Each kept edge between two aligned subgraphs drops the matches whose landmark, carried into "
                     "the other subgraph by the pair's transform, misses the other feature's ray by more than this "

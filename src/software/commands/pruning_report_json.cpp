@@ -112,10 +112,6 @@ nlohmann::json PruningReportJson(const sfm_pruning::ViewGraphPruningReport& prun
     if (pair.judged_by_forest) {
       pairs.back()["forest_decision"] = LinkDecisionName(pair.forest_decision);
     }
-    if (pair.unverified_rotation_error_deg >= 0.0) {
-      pairs.back()["unverified_rotation_error_deg"] = pair.unverified_rotation_error_deg;
-      pairs.back()["cut_by_rotation"] = pair.cut_by_rotation;
-    }
     if (pair.has_frame_transform) {
       pairs.back()["frame_rotation_deg"] =
           RadToDeg(RotationAngleBetween(pair.k2_to_k1.rotation, Eigen::Matrix3d::Identity()));

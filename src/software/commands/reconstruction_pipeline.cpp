@@ -71,7 +71,6 @@ nlohmann::json TimingsJson(const EngineSettings& settings, const sfm_pruning::Vi
     json["prune_model_audit"] = settings.pruning.audit.enabled;
     json["prune_audit_model"] = AuditModelName(settings.pruning.audit.model_schedule);
     json["prune_audit_refine_final"] = settings.pruning.audit.refine_final;
-    json["prune_unverified_max_rotation_deg"] = settings.pruning.unverified_rotation.max_median_error_deg;
     json["prune_landmark_check_deg"] = settings.pruning.landmark_check.max_angle_deg;
     json["prune_ransac_enumerate_max"] = settings.pruning.alignment.max_enumerated_samples;
     json["prune_bisect_unsplittable"] = settings.pruning.partition.bisect_unsplittable;
