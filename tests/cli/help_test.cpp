@@ -1,3 +1,5 @@
+#include <algorithm>
+#include <filesystem>
 #include <string>
 #include <utility>
 #include <vector>
@@ -9,6 +11,7 @@
 
 namespace sfm_pruning::testing {
 namespace {
+namespace fs = std::filesystem;
 
 TEST(Cli, HelpListsSubcommandsAndEngines) {
   const CommandResult result = RunPrunesfm({"--help"});
@@ -55,6 +58,28 @@ TEST(Cli, PruneOffersTheModelAuditButNotHowTheFinalSolveStarts) {
   EXPECT_EQ(run.exit_code, 0);
   EXPECT_NE(run.out.find("--prune_model_audit"), std::string::npos);
   EXPECT_NE(run.out.find("--prune_audit_refine_final"), std::string::npos);
+}
+
+TEST(Cli, ValuesThatBreakTheLibrarysRulesStopBeforeAnyOutput) {
+  // Each flag is in its own range, but the audit would keep an edge below the share at which it
+  // re-admits one: the library's Check() refuses the pair, naming the field, before anything runs.
+  const fs::path out = ScratchDir("cli_option_rules") / "out";
+  for (const char* command : {"run", "prune"}) {
+    std::vector<std::string> args = {command, "--database", "/nonexistent/database.db"};
+    if (std::string(command) == "run") {
+      args.insert(args.end(), {"--output_path", out.string(), "--engine", "GLOBAL_PRUNED"});
+    } else {
+      args.insert(args.end(), {"--output", (out.string() + ".db")});
+    }
+    args.insert(args.end(), {"--prune_audit_keep_agreement", "0.9", "--prune_audit_readmit_agreement", "0.8"});
+    const CommandResult result = RunPrunesfm(args);
+    EXPECT_EQ(result.exit_code, 105) << result.err;
+    EXPECT_NE(result.err.find("ModelEdgeAuditOptions::keep_agreement must not exceed readmit_agreement"),
+              std::string::npos)
+        << result.err;
+    EXPECT_EQ(std::count(result.err.begin(), result.err.end(), '\n'), 1) << result.err;
+    EXPECT_FALSE(fs::exists(out));
+  }
 }
 
 TEST(Cli, OutOfRangeNumbersSayWhatIsExpectedInOneLine) {

@@ -155,6 +155,7 @@ void ReconstructionOptions::Check() const {
         "averaging has "
         "no positioning tracks)");
   }
+  pruning.Check();
   intrinsics.Check();
 }
 

@@ -1,5 +1,7 @@
 #include "sfm_pruning/pruning/baseline_ratio_consistency.hpp"
 
+#include "sfm_pruning/util/option_checks.hpp"
+
 #include <algorithm>
 #include <map>
 #include <optional>
@@ -101,6 +103,11 @@ std::vector<BaselineRatioCheck> MeasureBaselineRatios(const ViewGraph& graph, co
     }
   }
   return checks;
+}
+
+void BaselineRatioOptions::Check() const {
+  RequireAtLeast<size_t>(min_common_points, 2, "BaselineRatioOptions::min_common_points");
+  RequireInRange(min_parallax_deg, 0.0, 90.0, "BaselineRatioOptions::min_parallax_deg");
 }
 
 }  // namespace sfm_pruning

@@ -29,6 +29,9 @@ struct BaselineRatioOptions {
   // Two-view points with less parallax than this have depths too noisy to compare (synthetic
   // sequential_large@250, correct solutions: measured / true ratio up to 1.37 at 2 deg, 1.22 at 6).
   double min_parallax_deg = 6.0;
+
+  // Throws std::invalid_argument naming the first field out of range (util/option_checks.hpp).
+  void Check() const;
 };
 
 struct BaselineRatioCheck {

@@ -1,5 +1,7 @@
 #include "sfm_pruning/pruning/consistency_tests.hpp"
 
+#include "sfm_pruning/util/option_checks.hpp"
+
 #include <algorithm>
 
 #include "sfm_pruning/util/statistics.hpp"
@@ -109,6 +111,20 @@ void TestBaselineRatios(const ViewGraph& graph, const SubgraphSolution& solution
     report->violations.push_back(std::move(violation));
     report->consistent = false;
   }
+}
+
+void ConsistencyTestOptions::Check() const {
+  RequirePositiveAtMost(loop_step_deg, 180.0, "ConsistencyTestOptions::loop_step_deg");
+  RequireAtLeast<size_t>(cycles.max_cycle_length, 3, "ConsistencyTestOptions::cycles.max_cycle_length");
+  RequirePositiveAtMost(max_relative_rotation_error_deg, 180.0, "ConsistencyTestOptions::max_relative_rotation_error_deg");
+  RequirePositiveAtMost(max_relative_translation_error_deg, 180.0,
+                        "ConsistencyTestOptions::max_relative_translation_error_deg");
+  RequireAtLeast(min_translation_norm, 0.0, "ConsistencyTestOptions::min_translation_norm");
+  // 0 switches the baseline-ratio test off; a factor below 1 would reject equal ratios.
+  if (max_baseline_ratio_factor != 0.0) {
+    RequireAtLeast(max_baseline_ratio_factor, 1.0, "ConsistencyTestOptions::max_baseline_ratio_factor (or 0: off)");
+  }
+  baseline_ratio.Check();
 }
 
 }  // namespace sfm_pruning

@@ -44,6 +44,9 @@ struct ConsistencyTestOptions {
   // Needs the views' features, so TestBaselineRatios runs it, not TestSubgraphConsistency.
   double max_baseline_ratio_factor = 1.25;
   BaselineRatioOptions baseline_ratio;
+
+  // Throws std::invalid_argument naming the first field out of range (util/option_checks.hpp).
+  void Check() const;
 };
 
 enum class ConsistencyTest { kLoop, kRelativeRotation, kRelativeTranslation, kBaselineRatio };

@@ -1,5 +1,7 @@
 #include "sfm_pruning/pruning/landmark_match_check.hpp"
 
+#include "sfm_pruning/util/option_checks.hpp"
+
 #include <map>
 #include <optional>
 #include <utility>
@@ -136,6 +138,10 @@ LandmarkMatchCheckReport CheckMatchesAgainstLandmarks(const LandmarkMatchCheckOp
     if (graph_edge->matches.size() < options.min_matches) report.emptied.push_back(edge);
   }
   return report;
+}
+
+void LandmarkMatchCheckOptions::Check() const {
+  RequireInRange(max_angle_deg, 0.0, 90.0, "LandmarkMatchCheckOptions::max_angle_deg");
 }
 
 }  // namespace sfm_pruning

@@ -42,6 +42,9 @@ struct LandmarkMatchCheckOptions {
   // each view is placed in the other's subgraph by the edge's own EPnP, and the landmarks are
   // checked against that placement (false: such edges are left alone).
   bool place_views_without_transform = true;
+
+  // Throws std::invalid_argument naming the first field out of range (util/option_checks.hpp).
+  void Check() const;
 };
 
 // Two accepted subgraphs (indices into the partition's accepted list) and the frame transform of

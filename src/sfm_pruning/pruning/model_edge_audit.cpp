@@ -1,5 +1,7 @@
 #include "sfm_pruning/pruning/model_edge_audit.hpp"
 
+#include "sfm_pruning/util/option_checks.hpp"
+
 #include <map>
 #include <utility>
 
@@ -62,6 +64,17 @@ std::vector<EdgeAgreement> AuditEdgesAgainstModel(const ViewGraph& graph, const 
     out.push_back(agreement);
   }
   return out;
+}
+
+void ModelEdgeAuditOptions::Check() const {
+  RequirePositiveAtMost(max_transfer_error_px, 1e4, "ModelEdgeAuditOptions::max_transfer_error_px");
+  RequireAtLeast<size_t>(min_transferred_matches, 1, "ModelEdgeAuditOptions::min_transferred_matches");
+  RequireInRange(readmit_agreement, 0.0, 1.0, "ModelEdgeAuditOptions::readmit_agreement");
+  RequireInRange(keep_agreement, 0.0, 1.0, "ModelEdgeAuditOptions::keep_agreement");
+  // An edge can be both below keep_agreement and at readmit_agreement otherwise.
+  if (!(keep_agreement <= readmit_agreement)) {
+    throw std::invalid_argument("ModelEdgeAuditOptions::keep_agreement must not exceed readmit_agreement");
+  }
 }
 
 }  // namespace sfm_pruning

@@ -53,6 +53,9 @@ struct ModelEdgeAuditOptions {
   // from the audited model's poses (RefineGlobalModel) instead of solving from scratch.
   AuditModelSchedule model_schedule = AuditModelSchedule::kLightAdjustment;
   bool refine_final = true;  // false: the final solve from scratch (RunGlobalEngine)
+
+  // Throws std::invalid_argument naming the first field out of range (util/option_checks.hpp).
+  void Check() const;
 };
 
 struct EdgeAgreement {

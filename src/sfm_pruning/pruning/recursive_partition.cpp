@@ -1,5 +1,7 @@
 #include "sfm_pruning/pruning/recursive_partition.hpp"
 
+#include "sfm_pruning/util/option_checks.hpp"
+
 #include <chrono>
 #include <map>
 #include <set>
@@ -282,6 +284,13 @@ std::vector<EdgeOfSubgraphs> EdgesOfAcceptedSubgraphs(const ViewGraph& graph,
     if (a != subgraph_of.end() && b != subgraph_of.end()) edges.push_back({pair, a->second, b->second});
   });
   return edges;
+}
+
+void RecursivePartitionOptions::Check() const {
+  RequirePositiveAtMost(louvain.resolution, 1e6, "RecursivePartitionOptions::louvain.resolution");
+  RequireAtLeast(num_threads, 1, "RecursivePartitionOptions::num_threads");
+  RequireInRange(max_depth, 0, 64, "RecursivePartitionOptions::max_depth");
+  consistency.Check();
 }
 
 }  // namespace sfm_pruning

@@ -57,6 +57,9 @@ struct RecursivePartitionOptions {
   // accepted as unsplittable; bisected, the inter-subgraph pruning judges that edge
   // (docs/pruning.md).
   bool bisect_unsplittable = true;
+
+  // Throws std::invalid_argument naming the first field out of range (util/option_checks.hpp).
+  void Check() const;
 };
 
 enum class SubgraphStatus {

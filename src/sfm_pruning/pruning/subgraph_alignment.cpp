@@ -1,5 +1,7 @@
 #include "sfm_pruning/pruning/subgraph_alignment.hpp"
 
+#include "sfm_pruning/util/option_checks.hpp"
+
 #include <algorithm>
 #include <cmath>
 #include <numeric>
@@ -409,6 +411,20 @@ SubgraphAlignmentResult AlignSubgraphPair(const ViewGraph& graph, const Subgraph
         FrameSimilarityOfChain(mean_k1, mean_k2, result.mean_rotation, result.mean_translation, result.beta);
   }
   return result;
+}
+
+void SubgraphAlignmentOptions::Check() const {
+  placement.Check();
+  RequireInRange(num_iterations, 1, 1000000, "SubgraphAlignmentOptions::num_iterations");
+  RequirePositiveAtMost(sample_fraction, 1.0, "SubgraphAlignmentOptions::sample_fraction");
+  // β* needs two edges (chained_relative_pose.hpp).
+  RequireAtLeast<size_t>(min_sample_size, 2, "SubgraphAlignmentOptions::min_sample_size");
+  RequirePositiveAtMost(max_rotation_deviation_deg, 180.0, "SubgraphAlignmentOptions::max_rotation_deviation_deg");
+  RequirePositiveAtMost(max_translation_deviation_fraction, 1e6,
+                        "SubgraphAlignmentOptions::max_translation_deviation_fraction");
+  RequireAtLeast<size_t>(max_hypotheses, 1, "SubgraphAlignmentOptions::max_hypotheses");
+  RequireInRange(coverage_break_even, 0.0, 1.0, "SubgraphAlignmentOptions::coverage_break_even");
+  RequireInRange(relative_coverage_break_even, 0.0, 1.0, "SubgraphAlignmentOptions::relative_coverage_break_even");
 }
 
 }  // namespace sfm_pruning

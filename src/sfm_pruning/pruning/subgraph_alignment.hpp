@@ -86,6 +86,9 @@ struct SubgraphAlignmentOptions {
   // Edges that cannot vote (too few 2D–3D correspondences, failed PnP, j unposed in k2).
   enum class NonVotingPolicy { kKeep, kRemove };
   NonVotingPolicy non_voting_edges = NonVotingPolicy::kKeep;
+
+  // Throws std::invalid_argument naming the first field out of range (util/option_checks.hpp).
+  void Check() const;
 };
 
 enum class SubgraphAlignmentStatus {

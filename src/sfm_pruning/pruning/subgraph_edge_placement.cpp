@@ -1,5 +1,7 @@
 #include "sfm_pruning/pruning/subgraph_edge_placement.hpp"
 
+#include "sfm_pruning/util/option_checks.hpp"
+
 #include <algorithm>
 #include <set>
 
@@ -112,6 +114,13 @@ EdgePlacement PlaceViewInSubgraph(const ViewGraph& graph, IndexT view_i, IndexT 
   placement.num_expected_landmarks = coverage.expected;
   placement.num_matched_landmarks = coverage.matched;
   return placement;
+}
+
+void EdgePlacementOptions::Check() const {
+  // EPnP needs 4 points; fewer leave the placement undetermined.
+  RequireAtLeast<size_t>(min_correspondences, 4, "EdgePlacementOptions::min_correspondences");
+  RequirePositiveAtMost(coverage_max_ray_angle_deg, 180.0, "EdgePlacementOptions::coverage_max_ray_angle_deg");
+  RequireAtLeast(coverage_image_margin_px, 0.0, "EdgePlacementOptions::coverage_image_margin_px");
 }
 
 }  // namespace sfm_pruning

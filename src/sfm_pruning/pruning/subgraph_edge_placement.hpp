@@ -40,6 +40,9 @@ struct EdgePlacementOptions {
   // most coverage_max_ray_angle_deg (beyond that, descriptors are not expected to match).
   double coverage_max_ray_angle_deg = 45.0;
   double coverage_image_margin_px = 10.0;
+
+  // Throws std::invalid_argument naming the first field out of range (util/option_checks.hpp).
+  void Check() const;
 };
 
 enum class EdgePlacementStatus {

@@ -1,5 +1,7 @@
 #include "sfm_pruning/pruning/subgraph_loop_consistency.hpp"
 
+#include "sfm_pruning/util/option_checks.hpp"
+
 #include <algorithm>
 #include <cmath>
 #include <map>
@@ -108,6 +110,14 @@ SubgraphLoopResult FindLoopInconsistentLinks(const std::vector<SubgraphLink>& li
   }
   RejectCycleInconsistentLinks(links, frames, options, &active, &result);
   return result;
+}
+
+void SubgraphLoopOptions::Check() const {
+  RequireAtLeast(min_unverified_trust, 0.0, "SubgraphLoopOptions::min_unverified_trust");
+  RequireAtLeast(min_unverified_coverage, 0.0, "SubgraphLoopOptions::min_unverified_coverage");
+  RequirePositiveAtMost(max_rotation_deg, 180.0, "SubgraphLoopOptions::max_rotation_deg");
+  RequireAtLeast(max_scale_ratio, 1.0, "SubgraphLoopOptions::max_scale_ratio");
+  RequirePositiveAtMost(max_translation_fraction, 1e6, "SubgraphLoopOptions::max_translation_fraction");
 }
 
 }  // namespace sfm_pruning

@@ -67,6 +67,9 @@ struct SubgraphLoopOptions {
   // Second pass, cycles of 4..max_cycle_length subgraphs (subgraph_cycle_consistency.hpp); below 4
   // the pass is off.
   size_t max_cycle_length = 6;
+
+  // Throws std::invalid_argument naming the first field out of range (util/option_checks.hpp).
+  void Check() const;
 };
 
 // A subgraph's mean camera centre and radius (median distance of its centres to the mean), in its

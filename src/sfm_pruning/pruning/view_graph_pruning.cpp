@@ -1,5 +1,7 @@
 #include "sfm_pruning/pruning/view_graph_pruning.hpp"
 
+#include "sfm_pruning/util/option_checks.hpp"
+
 #include <algorithm>
 #include <chrono>
 #include <map>
@@ -206,6 +208,7 @@ void CheckMatchesOfAlignedPairs(const LandmarkMatchCheckOptions& options, const 
 void PruneViewGraph(const ViewGraphPruningOptions& options, ViewGraph* graph, const SfmData& views_and_intrinsics,
                     const FeaturesPerView& features, ViewGraphPruningReport* report,
                     const ProgressCallback& progress) {
+  options.Check();
   const auto total_start = std::chrono::steady_clock::now();
   ViewGraphPruningReport local;
   ViewGraphPruningReport& out = report != nullptr ? *report : local;
@@ -420,6 +423,20 @@ void RunPrunedGlobalEngine(const PrunedGlobalEngineOptions& options, const ViewG
              options.pruning.audit.model_schedule != AuditModelSchedule::kFull) {
     RunGlobalEngine(options.engine, pruned, views_and_intrinsics, features, out, &result.engine, progress);
   }
+}
+
+void ViewGraphPruningOptions::Check() const {
+  partition.Check();
+  alignment.Check();
+  // 0: no cap; otherwise at least the minimal sample of two edges.
+  if (max_sample_size != 0) {
+    RequireAtLeast<size_t>(max_sample_size, 2, "ViewGraphPruningOptions::max_sample_size (or 0: no cap)");
+  }
+  loops.Check();
+  RequireAtLeast(trust_prior_edges, 0.0, "ViewGraphPruningOptions::trust_prior_edges");
+  RequireAtLeast(num_threads, 1, "ViewGraphPruningOptions::num_threads");
+  audit.Check();
+  landmark_check.Check();
 }
 
 }  // namespace sfm_pruning

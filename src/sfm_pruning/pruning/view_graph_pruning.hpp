@@ -74,6 +74,9 @@ struct ViewGraphPruningOptions {
   // The kept edges between subgraphs lose the matches their subgraphs' landmarks contradict
   // (landmark_match_check.hpp; off when max_angle_deg is 0).
   LandmarkMatchCheckOptions landmark_check;
+
+  // Throws std::invalid_argument naming the first field out of range (util/option_checks.hpp).
+  void Check() const;
 };
 
 struct SubgraphPairReport {
@@ -136,7 +139,8 @@ struct ViewGraphPruningReport {
 };
 
 // Invalidates the inconsistent inter-subgraph edges of `graph`. Progress: "subgraph partition",
-// then "inter-subgraph pruning" (pairs done / pairs).
+// then "inter-subgraph pruning" (pairs done / pairs). Throws std::invalid_argument when
+// options.Check() does.
 void PruneViewGraph(const ViewGraphPruningOptions& options, ViewGraph* graph, const SfmData& views_and_intrinsics,
                     const FeaturesPerView& features, ViewGraphPruningReport* report,
                     const ProgressCallback& progress = {});

@@ -224,10 +224,18 @@ void AddSolverOptions(CLI::App* cmd, EngineSettings* settings) {
   // Translation averaging builds its tracks after the solve, from the solved cameras: the option
   // would be ignored, so the combination is refused rather than run as if it had been honoured.
   // This takes the command's one parse-complete callback slot (reconstruct, run and prune set none).
+  // The same callback checks every value against the library's rules (ReconstructionOptions::Check,
+  // which includes the pruning's), so a value that no single flag's range catches (an audit whose
+  // keep share exceeds its re-admit share) stops the command before it reads anything.
   cmd->parse_complete_callback([settings]() {
     if (settings->positioning == "TRANSLATION_AVERAGING" && settings->positioning_tracks == "MATCH_STARS") {
       throw CLI::ValidationError("--positioning_tracks MATCH_STARS",
                                  "needs --positioning GLOMAP (translation averaging has no positioning tracks)");
+    }
+    try {
+      ToReconstructionOptions(*settings).Check();
+    } catch (const std::invalid_argument& e) {
+      throw CLI::ValidationError("option values", e.what());
     }
   });
 }
