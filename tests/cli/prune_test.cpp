@@ -68,6 +68,47 @@ TEST(CliPrune, DatabaseOfMatchesOnlyGetsItsPairsVerifiedHere) {
   EXPECT_EQ(after.sfm_data.views.size(), before.sfm_data.views.size());
 }
 
+TEST(CliPrune, PaperPresetIsEveryAdditionOffAndFlagsStillApply) {
+  const fs::path scratch = ScratchDir("cli_prune_preset");
+  const std::string database = (SmallProject() / "database.db").string();
+  const auto prune = [&](const std::string& name, std::vector<std::string> extra) {
+    std::vector<std::string> args = {"prune", "--database", database, "--output", (scratch / (name + ".db")).string()};
+    args.insert(args.end(), extra.begin(), extra.end());
+    const CommandResult result = RunPrunesfm(args);
+    EXPECT_EQ(result.exit_code, 0) << result.err;
+    return nlohmann::json::parse(std::ifstream(scratch / (name + ".pruning_report.json")));
+  };
+  const nlohmann::json preset = prune("preset", {"--prune_preset", "paper"});
+  const nlohmann::json flags = prune(
+      "flags", {"--prune_partition_weight", "inliers", "--prune_bisect_unsplittable", "false",
+                "--prune_baseline_ratio_factor", "0", "--prune_max_sample_size", "0", "--prune_ransac_enumerate_max", "0",
+                "--prune_hypothesis_selection", "largest_consensus", "--prune_rotation_only_fallback", "false",
+                "--prune_subgraph_loops", "false", "--prune_trust_prior_edges", "0", "--prune_landmark_check_deg", "0",
+                "--prune_model_audit", "false"});
+  // The same pruning (the tree differs only in its timings).
+  EXPECT_EQ(preset.at("removed_edges"), flags.at("removed_edges"));
+  EXPECT_EQ(preset.at("tree").size(), flags.at("tree").size());
+  const auto bytes = [](const fs::path& path) {
+    std::ifstream in(path, std::ios::binary);
+    return std::string(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>());
+  };
+  EXPECT_EQ(bytes(scratch / "preset.db"), bytes(scratch / "flags.db"));
+  const auto stages = [](const nlohmann::json& report) {
+    std::vector<std::string> names;
+    for (const nlohmann::json& phase : report.at("phases")) names.push_back(phase.at("stage").get<std::string>());
+    return names;
+  };
+  EXPECT_EQ(stages(preset), (std::vector<std::string>{"subgraph partition", "inter-subgraph pruning"}));
+  // A flag given with the preset wins, before or after it on the command line.
+  const nlohmann::json audited = prune("audited", {"--prune_model_audit", "true", "--prune_preset", "paper"});
+  EXPECT_EQ(stages(audited).back(), "model audit");
+  const CommandResult unknown = RunPrunesfm(
+      {"prune", "--database", database, "--output", (scratch / "x.db").string(), "--prune_preset", "mine"});
+  EXPECT_EQ(unknown.exit_code, 105);  // CLI11's validation error
+  EXPECT_EQ(CountLines(unknown.err), 1) << unknown.err;
+  EXPECT_NE(unknown.err.find("--prune_preset"), std::string::npos) << unknown.err;
+}
+
 TEST(CliPrune, InputMustBeExactlyOneOfDatabaseAndOpenMvg) {
   const fs::path scratch = ScratchDir("cli_prune_inputs");
   const std::string out = (scratch / "out.db").string();

@@ -205,6 +205,20 @@ void CheckMatchesOfAlignedPairs(const LandmarkMatchCheckOptions& options, const 
 
 }  // namespace
 
+void ApplyPaperMethod(ViewGraphPruningOptions* options) {
+  options->partition.edge_weight = RecursivePartitionOptions::EdgeWeight::kInliers;
+  options->partition.bisect_unsplittable = false;
+  options->partition.consistency.max_baseline_ratio_factor = 0.0;
+  options->max_sample_size = 0;
+  options->alignment.max_enumerated_samples = 0;
+  options->alignment.hypothesis_selection = SubgraphAlignmentOptions::HypothesisSelection::kLargestConsensus;
+  options->alignment.rotation_only_fallback = false;
+  options->loops.enabled = false;
+  options->trust_prior_edges = 0.0;
+  options->landmark_check.max_angle_deg = 0.0;
+  options->audit.enabled = false;
+}
+
 void PruneViewGraph(const ViewGraphPruningOptions& options, ViewGraph* graph, const SfmData& views_and_intrinsics,
                     const FeaturesPerView& features, ViewGraphPruningReport* report,
                     const ProgressCallback& progress) {

@@ -138,6 +138,14 @@ struct ViewGraphPruningReport {
   double total_seconds = 0.0;
 };
 
+// The paper's method: every PruneSfM addition (docs/pruning.md, "PruneSfM's additions") switched
+// off in `options`, the other fields left as they are (the paper's values are the defaults there).
+// The additions: distinctiveness weights in the partition, bisection of unsplittable communities,
+// the baseline-ratio test, the sample cap, enumerated samples, match-coverage selection, the
+// rotation-only fallback, the loop check of subgraph pairs with its trust prior, the landmark
+// check of matches and the model audit.
+void ApplyPaperMethod(ViewGraphPruningOptions* options);
+
 // Invalidates the inconsistent inter-subgraph edges of `graph`. Progress: "subgraph partition",
 // then "inter-subgraph pruning" (pairs done / pairs). Throws std::invalid_argument when
 // options.Check() does.

@@ -29,7 +29,20 @@ std::string AuditModelName(sfm_pruning::AuditModelSchedule schedule) {
 }
 
 void AddPruningOptions(CLI::App* cmd, sfm_pruning::ViewGraphPruningOptions* options, bool final_solve) {
-  CLI::App* group = cmd->add_option_group("Pruning", "View-graph pruning (GLOBAL_PRUNED, prune); paper values");
+  CLI::App* group = cmd->add_option_group(
+      "Pruning", "View-graph pruning (GLOBAL_PRUNED, prune): the paper's method with PruneSfM's additions "
+                 "(docs/pruning.md)");
+  // First in the group: CLI11 stores the options' values in the order they are defined, so the
+  // preset is applied before, and overridden by, any flag given with it.
+  group->add_option_function<std::string>(
+          "--prune_preset",
+          [options](const std::string& preset) {
+            if (preset == "paper") sfm_pruning::ApplyPaperMethod(options);
+          },
+          "default: the paper's method with PruneSfM's additions; paper: every addition off (flags given "
+          "with it still apply)")
+      ->check(CLI::IsMember({"default", "paper"}))
+      ->default_str("default");
   sfm_pruning::RecursivePartitionOptions& partition = options->partition;
   sfm_pruning::ConsistencyTestOptions& consistency = partition.consistency;
   sfm_pruning::SubgraphAlignmentOptions& alignment = options->alignment;
