@@ -10,6 +10,7 @@
 #include <filesystem>
 #include <fstream>
 #include <iterator>
+#include <map>
 #include <set>
 #include <string>
 #include <vector>
@@ -28,22 +29,25 @@ namespace fs = std::filesystem;
 // The scene, and a copy of its database with every putative pair stored as a two-view geometry
 // without pose, as COLMAP 3.8's matcher leaves it (the inliers here still hold the injected
 // outliers: prune re-estimates every pose from them).
-const fs::path& OrbitProject() {
-  static const fs::path dir = []() {
-    const std::string test_name = ::testing::UnitTest::GetInstance()->current_test_info()->name();
-    const fs::path out = ScratchDir("cli_prune_orbit_" + test_name) / "orbit";
-    const CommandResult result = RunPrunesfm(
-        {"synth", "--scene", "orbit_symmetric", "--seed", "3", "--num_views", "20", "--output", out.string()});
-    EXPECT_EQ(result.exit_code, 0) << result.err;
-    ColmapDatabase database = ReadColmapDatabase(out / "database.db");
-    for (const auto& [pair, matches] : database.putative) {
-      database.verified[pair].inliers = matches;
-      database.verified[pair].config = static_cast<int>(ColmapTwoViewConfig::kCalibrated);
-    }
-    WriteColmapDatabase(database, out / "verified.db");
-    return out;
-  }();
-  return dir;
+// `num_views`: 20 for the tests that compare removals with the synthetic truth; 12 for those that
+// only read the partition's records (a third of the pairs to verify).
+const fs::path& OrbitProject(int num_views = 20) {
+  static std::map<int, fs::path> made;  // one scene per size and process
+  const auto known = made.find(num_views);
+  if (known != made.end()) return known->second;
+  const std::string test_name = ::testing::UnitTest::GetInstance()->current_test_info()->name();
+  const fs::path out = ScratchDir("cli_prune_orbit" + std::to_string(num_views) + "_" + test_name) / "orbit";
+  const CommandResult result =
+      RunPrunesfm({"synth", "--scene", "orbit_symmetric", "--seed", "3", "--num_views", std::to_string(num_views),
+                   "--output", out.string()});
+  EXPECT_EQ(result.exit_code, 0) << result.err;
+  ColmapDatabase database = ReadColmapDatabase(out / "database.db");
+  for (const auto& [pair, matches] : database.putative) {
+    database.verified[pair].inliers = matches;
+    database.verified[pair].config = static_cast<int>(ColmapTwoViewConfig::kCalibrated);
+  }
+  WriteColmapDatabase(database, out / "verified.db");
+  return made.emplace(num_views, out).first->second;
 }
 
 std::set<ViewPair> RemovedPairs(const fs::path& report_path) {
@@ -150,7 +154,7 @@ TEST(CliPruneEndToEnd, DatabaseLosesExactlyWhatGlobalPrunedRemovesAndRunsAreRepr
 // pruning report (empty, with a test failure, when the command fails).
 nlohmann::json PruneOrbitReport(const std::string& scratch_name, const std::vector<std::string>& extra_args) {
   const fs::path scratch = ScratchDir(scratch_name);
-  std::vector<std::string> args = {"prune", "--database", (OrbitProject() / "verified.db").string(), "--output",
+  std::vector<std::string> args = {"prune", "--database", (OrbitProject(12) / "verified.db").string(), "--output",
                                    (scratch / "pruned.db").string(), "--prune_model_audit", "false"};
   args.insert(args.end(), extra_args.begin(), extra_args.end());
   const CommandResult result = RunPrunesfm(args);
