@@ -149,13 +149,12 @@ TEST(CliPruneEndToEnd, DatabaseLosesExactlyWhatGlobalPrunedRemovesAndRunsAreRepr
   EXPECT_EQ(removed, removed_by_engine);
 }
 
-// `prunesfm prune` of the orbit project's verified database with `extra_args`, without the model
-// audit (these tests read the partition's records, which the audit's solve does not change); its
-// pruning report (empty, with a test failure, when the command fails).
+// `prunesfm prune` of the 12-view orbit project's verified database with `extra_args`; its pruning
+// report (empty, with a test failure, when the command fails).
 nlohmann::json PruneOrbitReport(const std::string& scratch_name, const std::vector<std::string>& extra_args) {
   const fs::path scratch = ScratchDir(scratch_name);
   std::vector<std::string> args = {"prune", "--database", (OrbitProject(12) / "verified.db").string(), "--output",
-                                   (scratch / "pruned.db").string(), "--prune_model_audit", "false"};
+                                   (scratch / "pruned.db").string()};
   args.insert(args.end(), extra_args.begin(), extra_args.end());
   const CommandResult result = RunPrunesfm(args);
   EXPECT_EQ(result.exit_code, 0) << result.err;

@@ -71,17 +71,12 @@ TEST(EnginePrunedScene, CleanSceneIsNotHarmed) {
   ASSERT_TRUE(run.pruned.engine.success) << run.pruned.engine.message;
   ExpectWellFormedPartition(run.pruned.pruning.partition);
   EXPECT_GE(run.pruned.pruning.partition.accepted.size(), 2u);
-  // The pruning's phases, then the model audit's (on by default).
+  // The pruning's phases (the model audit is off by default), then the solve of the pruned graph.
   std::vector<std::string> phases;
   for (const StageTiming& timing : run.pruned.pruning.timings) phases.push_back(timing.stage);
   EXPECT_EQ(phases, (std::vector<std::string>{"subgraph partition", "inter-subgraph pruning",
-                                              "landmark check of matches", "solve before the audit", "model audit"}));
-  // The final solve adjusts the audited model: no rotation averaging or positioning again, and one
-  // adjustment round fewer than a solve from scratch (the audit's adjustment was the first).
-  ASSERT_EQ(run.pruned.engine.timings.size(), 3u);
-  EXPECT_EQ(run.pruned.engine.timings[1].stage, "triangulation from the poses");
-  EXPECT_EQ(run.pruned.engine.bundle_adjustments.size(),
-            static_cast<size_t>(GlobalEngineOptions().num_bundle_rounds));
+                                              "landmark check of matches"}));
+  EXPECT_EQ(run.pruned.engine.timings.front().stage, "rotation averaging");
   for (const RemovedEdge& removed : run.pruned.pruning.removed_edges) {
     EXPECT_FALSE(run.pruned.pruning.partition.accepted.empty());
     EXPECT_NE(removed.invalidation.reason, EdgeInvalidReason::kNone);
@@ -97,9 +92,29 @@ TEST(EnginePrunedScene, CleanSceneIsNotHarmed) {
   EXPECT_GE(pruned_auc, global_auc - 1.0);
 }
 
+TEST(EnginePrunedScene, TheAuditedModelIsAdjustedNotSolvedAgain) {
+  const SyntheticScene& scene = CleanScene();
+  PrunedGlobalEngineOptions options;
+  options.pruning.audit.enabled = true;
+  const Comparison run = CompareEngines(scene, options);
+  ASSERT_TRUE(run.pruned.engine.success) << run.pruned.engine.message;
+  std::vector<std::string> phases;
+  for (const StageTiming& timing : run.pruned.pruning.timings) phases.push_back(timing.stage);
+  EXPECT_EQ(phases, (std::vector<std::string>{"subgraph partition", "inter-subgraph pruning",
+                                              "landmark check of matches", "solve before the audit", "model audit"}));
+  // The final solve adjusts the audited model: no rotation averaging or positioning again, and one
+  // adjustment round fewer than a solve from scratch (the audit's adjustment was the first).
+  ASSERT_EQ(run.pruned.engine.timings.size(), 3u);
+  EXPECT_EQ(run.pruned.engine.timings[1].stage, "triangulation from the poses");
+  EXPECT_EQ(run.pruned.engine.bundle_adjustments.size(),
+            static_cast<size_t>(GlobalEngineOptions().num_bundle_rounds));
+  EXPECT_GE(AucAt(run.pruned_eval, 3.0), AucAt(run.global_eval, 3.0) - 1.0);
+}
+
 TEST(EnginePrunedScene, AFullAuditSolveThatChangesNothingIsTheFinalSolve) {
   const SyntheticScene& scene = CleanScene();
   PrunedGlobalEngineOptions options;
+  options.pruning.audit.enabled = true;
   options.pruning.audit.model_schedule = AuditModelSchedule::kFull;
   options.pruning.audit.refine_final = false;
   const Comparison run = CompareEngines(scene, options);

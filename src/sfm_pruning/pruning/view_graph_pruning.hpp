@@ -69,7 +69,7 @@ struct ViewGraphPruningOptions {
   double trust_prior_edges = 2.0;
   int num_threads = 1;  // subgraph pairs aligned in parallel (the result does not depend on it)
   // The pruning's decisions reviewed against the model solved from the pruned graph, then adjusted
-  // again (on by default, not in the paper; applied by RunPrunedGlobalEngine, not PruneViewGraph).
+  // again (off by default, not in the paper; applied by PruneAndAudit, not PruneViewGraph).
   ModelEdgeAuditOptions audit;
   // The kept edges between subgraphs lose the matches their subgraphs' landmarks contradict
   // (landmark_match_check.hpp; off when max_angle_deg is 0).
