@@ -103,7 +103,8 @@ def run_log(out, engine):
 
 
 def run_ours(args, prunesfm, scene, images, intrinsics, out, engine, force):
-    argv = [prunesfm, "run", images, out, "--engine", engine, "--num_threads", args.threads, "--seed", args.seed]
+    argv = [prunesfm, "run", images, out, "--engine", engine, "--num_threads", args.threads, "--solver_threads", args.threads,
+            "--seed", args.seed]
     if intrinsics is not None:
         argv += ["--k_file", intrinsics]
     if force:

@@ -41,7 +41,7 @@ def run_engine(args, prunesfm, scene, engine, work):
         shutil.rmtree(out)
     stage = rb.run_stage("run", [prunesfm, "run", "--database", scene / "database.db", "--image_path",
                                  scene / "images", "--output_path", out, "--engine", engine, "--num_threads",
-                                 args.threads, "--seed", args.seed], work / f"{engine}.log", args.timeout)
+                                 args.threads, "--solver_threads", args.threads, "--seed", args.seed], work / f"{engine}.log", args.timeout)
     row = {"engine": engine, "seconds": stage["seconds"], "peak_mb": stage["peak_mb"], "rc": stage["rc"]}
     if stage["rc"] != 0:
         row["error"] = stage.get("error")
@@ -81,7 +81,7 @@ def summarize_pruning(report):
 def markdown(args, rows):
     L = [f"`prunesfm synth --scene sequential_large --num_views {args.num_views} --seed {args.seed}` "
           "(a camera path along a street with repeated facades, two laps, sequential + retrieval-like pairs), "
-          f"then `prunesfm run --engine E --num_threads {args.threads}` for GLOBAL and GLOBAL_PRUNED one after "
+          f"then `prunesfm run --engine E --num_threads {args.threads} --solver_threads {args.threads}` for GLOBAL and GLOBAL_PRUNED one after "
           "the other on the same database (wall time of the whole run, verification included for both). "
           "Target (issue 5): GLOBAL_PRUNED ≤ 1.5 × GLOBAL.", ""]
     ok = {r["engine"]: r for r in rows if r["rc"] == 0}

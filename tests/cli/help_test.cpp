@@ -84,7 +84,8 @@ TEST(Cli, ValuesThatBreakTheLibrarysRulesStopBeforeAnyOutput) {
 
 TEST(Cli, OutOfRangeNumbersSayWhatIsExpectedInOneLine) {
   const std::vector<std::pair<std::vector<std::string>, std::string>> cases = {
-      {{"run", "--num_threads", "0"}, "--num_threads: must be positive, got 0"},
+      {{"run", "--num_threads", "-1"}, "--num_threads: must be zero or more, got -1"},
+      {{"run", "--solver_threads", "0"}, "--solver_threads: must be positive, got 0"},
       {{"run", "--positioning_random_starts", "0"}, "--positioning_random_starts"},
       {{"run", "--prune_max_depth", "-1"}, "--prune_max_depth: must be zero or more, got -1"},
       {{"run", "--prune_louvain_resolution", "abc"}, "expected a number, got 'abc'"},

@@ -4,6 +4,7 @@
 
 #include <filesystem>
 #include <fstream>
+#include <iterator>
 #include <string>
 #include <vector>
 
@@ -70,6 +71,31 @@ TEST(CliReconstruct, RunFromColmapDatabase) {
                    (scratch / "images").string(), "--output_path", out.string(), "--engine", "GLOBAL"});
   ASSERT_EQ(result.exit_code, 0) << result.err;
   EXPECT_GE(Auc3(out / "sparse" / "0", scratch), 97.0);
+}
+
+std::string FileText(const fs::path& path) {
+  std::ifstream in(path, std::ios::binary);
+  return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
+}
+
+// --num_threads (default: every core) drives only the stages whose result does not depend on it,
+// and Ceres runs on --solver_threads (default 1): the model is bitwise the same for any count.
+TEST(CliReconstruct, ModelDoesNotDependOnTheThreadCount) {
+  const fs::path scratch = ScratchDir("cli_reconstruct_threads");
+  std::vector<std::string> models;
+  for (const char* threads : {"1", "3", ""}) {
+    const fs::path out = scratch / (std::string("threads_") + (*threads ? threads : "default"));
+    std::vector<std::string> args = {"reconstruct", "--database", (CleanProject() / "database.db").string(),
+                                     "--output_path", out.string(), "--engine", "GLOBAL_PRUNED"};
+    if (*threads) args.insert(args.end(), {"--num_threads", threads});
+    const CommandResult result = RunPrunesfm(args);
+    ASSERT_EQ(result.exit_code, 0) << result.err;
+    models.push_back(FileText(out / "sfm_data.json") + FileText(out / "sparse" / "0" / "images.bin") +
+                     FileText(out / "sparse" / "0" / "points3D.bin"));
+  }
+  EXPECT_GT(models[0].size(), 1000u);
+  EXPECT_EQ(models[1], models[0]) << "--num_threads 3";
+  EXPECT_EQ(models[2], models[0]) << "default threads";
 }
 
 TEST(CliReconstruct, DatabaseGeometriesWithoutPosesAreReestimated) {
@@ -212,6 +238,17 @@ TEST(CliReconstruct, MissingDatabaseIsOneLine) {
   EXPECT_EQ(result.exit_code, 1);
   EXPECT_EQ(CountLines(result.err), 1) << result.err;
   EXPECT_NE(result.err.find("/nonexistent/database.db"), std::string::npos) << result.err;
+}
+
+TEST(CliReconstruct, ImagePathGoesWithADatabase) {
+  const fs::path out = ScratchDir("cli_rec_image_path") / "out";
+  const CommandResult result =
+      RunPrunesfm({"reconstruct", "--sfm_data", (CleanProject() / "sfm_data.json").string(), "--matches_dir",
+                   (CleanProject() / "matches").string(), "--image_path", "images", "--output_path", out.string()});
+  EXPECT_EQ(result.exit_code, 1);
+  EXPECT_EQ(CountLines(result.err), 1) << result.err;
+  EXPECT_NE(result.err.find("--image_path goes with --database"), std::string::npos) << result.err;
+  EXPECT_FALSE(fs::exists(out));
 }
 
 TEST(CliReconstruct, DatabaseWithoutGeometriesOrMatchesHasNoEdges) {

@@ -92,7 +92,8 @@ TEST(Reconstruction, OptionsAreChecked) {
     change(&options);
     EXPECT_THROW(options.Check(), std::invalid_argument);
   };
-  rejects([](ReconstructionOptions* o) { o->num_threads = 0; });
+  rejects([](ReconstructionOptions* o) { o->num_threads = -1; });
+  rejects([](ReconstructionOptions* o) { o->solver_threads = 0; });
   rejects([](ReconstructionOptions* o) { o->positioning_random_starts = 0; });
   rejects([](ReconstructionOptions* o) { o->positioning_start_screening_iterations = -1; });
   rejects([](ReconstructionOptions* o) { o->max_epipolar_error_deg = 0.0; });

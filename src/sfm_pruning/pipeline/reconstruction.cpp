@@ -1,8 +1,10 @@
 #include "sfm_pruning/pipeline/reconstruction.hpp"
 
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <stdexcept>
+#include <thread>
 #include <utility>
 
 #include "sfm_pruning/util/error.hpp"
@@ -50,7 +52,7 @@ void SetPositioning(const ReconstructionOptions& options, GlobalEngineOptions* e
 GlobalEngineOptions EngineOptions(const ReconstructionOptions& options) {
   GlobalEngineOptions engine;
   engine.seed = options.seed;
-  engine.num_threads = options.num_threads;
+  engine.num_threads = options.solver_threads;
   SetPositioning(options, &engine);
   return engine;
 }
@@ -134,8 +136,14 @@ ReconstructionEngine ParseReconstructionEngine(const std::string& name) {
   throw std::invalid_argument("unknown engine '" + name + "' (GLOBAL or GLOBAL_PRUNED)");
 }
 
+int ReconstructionOptions::ResolvedThreads() const {
+  if (num_threads > 0) return num_threads;
+  return static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
+}
+
 void ReconstructionOptions::Check() const {
-  if (num_threads < 1) throw std::invalid_argument("ReconstructionOptions::num_threads must be at least 1");
+  if (num_threads < 0) throw std::invalid_argument("ReconstructionOptions::num_threads must be >= 0 (0: every core)");
+  if (solver_threads < 1) throw std::invalid_argument("ReconstructionOptions::solver_threads must be at least 1");
   if (positioning_random_starts < 1 || positioning_random_starts > 1000) {
     throw std::invalid_argument("ReconstructionOptions::positioning_random_starts must be in [1, 1000]");
   }
@@ -162,7 +170,7 @@ void ReconstructionOptions::Check() const {
 ViewGraphBuildOptions VerificationOptions(const ReconstructionOptions& options) {
   ViewGraphBuildOptions verification;
   verification.seed = options.seed;
-  verification.num_threads = options.num_threads;
+  verification.num_threads = options.ResolvedThreads();
   verification.two_view.relative_pose.max_angular_error_deg = options.max_epipolar_error_deg;
   verification.two_view.relative_pose.precision_check_ratio = options.verification_precision_ratio;
   return verification;
@@ -177,7 +185,7 @@ PrunedGlobalEngineOptions PrunedEngineOptions(const ReconstructionOptions& optio
   SetPositioning(options, &pruned.engine);
   pruned.pruning.partition.engine.positioning = options.positioning;
   pruned.pruning.partition.engine.positioning_tracks = options.positioning_tracks;
-  pruned.SetSeedAndThreads(options.seed, options.num_threads);
+  pruned.SetSeedAndThreads(options.seed, options.ResolvedThreads(), options.solver_threads);
   return pruned;
 }
 

@@ -40,10 +40,15 @@ ReconstructionEngine ParseReconstructionEngine(const std::string& name);
 
 struct ReconstructionOptions {
   ReconstructionEngine engine = ReconstructionEngine::kGlobal;
-  // Seed of every random choice (RANSAC, Louvain, positioning starts) and the worker threads;
-  // 1 thread gives bitwise reproducible models (Ceres's threaded sums do not).
+  // Seed of every random choice (RANSAC, Louvain, positioning starts).
   uint64_t seed = 0;
-  int num_threads = 1;
+  // Workers of the stages whose result does not depend on their number: verification, the
+  // pruning's community solves and subgraph pairs (0: every core, ResolvedThreads()).
+  int num_threads = 0;
+  // Ceres threads of positioning and bundle adjustment. 1 (the default) keeps every output
+  // bitwise reproducible for any num_threads; more are faster on large scenes, but Ceres's threaded
+  // sums then change the last digits from run to run.
+  int solver_threads = 1;
   PositioningMethod positioning = PositioningMethod::kGlobalPositioning;
   PositioningTracks positioning_tracks = PositioningTracks::kConnected;
   // Random starts of the positioning solve (GLOBAL_PRUNED: of its solve of the pruned graph),
@@ -55,6 +60,9 @@ struct ReconstructionOptions {
   double verification_precision_ratio = 0.5;
   ViewGraphPruningOptions pruning;  // GLOBAL_PRUNED only
   IntrinsicsRefinementOptions intrinsics;
+
+  // num_threads, or every core when it is 0.
+  int ResolvedThreads() const;
 
   // Throws std::invalid_argument naming the field when a value is out of range or a combination
   // cannot be honoured (MATCH_STARS tracks with translation averaging).

@@ -326,9 +326,9 @@ void PruneViewGraph(const ViewGraphPruningOptions& options, ViewGraph* graph, co
   out.total_seconds = SecondsSince(total_start);
 }
 
-void PrunedGlobalEngineOptions::SetSeedAndThreads(uint64_t seed, int num_threads) {
+void PrunedGlobalEngineOptions::SetSeedAndThreads(uint64_t seed, int num_threads, int solver_threads) {
   engine.seed = seed;
-  engine.num_threads = num_threads;
+  engine.num_threads = solver_threads;
   pruning.partition.engine.seed = seed;
   // Communities in parallel, each engine run on one thread: the partition is then the same for
   // any thread count (a multi-threaded Ceres sums in a thread-dependent order).

@@ -156,9 +156,11 @@ void PruneViewGraph(const ViewGraphPruningOptions& options, ViewGraph* graph, co
 struct PrunedGlobalEngineOptions {
   ViewGraphPruningOptions pruning;
   GlobalEngineOptions engine;  // final solve
-  // Copies engine.seed / num_threads into the partition's per-community engine and the Louvain
-  // and RANSAC seeds (so one --seed drives everything).
-  void SetSeedAndThreads(uint64_t seed, int num_threads);
+  // Copies `seed` into the final solve, the partition's per-community engine and the Louvain and
+  // RANSAC seeds (so one --seed drives everything); the communities and the subgraph pairs run on
+  // `num_threads` workers (the result does not depend on it), the final solve's Ceres on
+  // `solver_threads` (more than 1 changes the last digits from run to run).
+  void SetSeedAndThreads(uint64_t seed, int num_threads, int solver_threads = 1);
 };
 
 struct PrunedGlobalEngineReport {

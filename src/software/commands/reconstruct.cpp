@@ -18,13 +18,24 @@ struct ReconstructArguments {
   std::string matches_dir;
   std::string match_file;
   std::string database;
+  std::string image_path;
   std::string output;
   bool overwrite = false;
 };
 
+// The database's input, its images (for the point colours) under `image_path` when given.
+sfm_pruning::ReconstructionInput DatabaseInput(const std::string& database, const std::string& image_path) {
+  sfm_pruning::ReconstructionInput input = sfm_pruning::ReadColmapInput(database);
+  input.scene.root_path = image_path;
+  return input;
+}
+
 void RunReconstruct(const ReconstructArguments& args) {
   if (args.sfm_data.empty() == args.database.empty()) {
     throw sfm_pruning::Error("reconstruct: give either --sfm_data with --matches_dir, or --database");
+  }
+  if (!args.image_path.empty() && args.database.empty()) {
+    throw sfm_pruning::Error("reconstruct: --image_path goes with --database (an OpenMVG project names its image folder)");
   }
   if (!args.sfm_data.empty() && args.matches_dir.empty()) {
     throw sfm_pruning::Error("reconstruct: --sfm_data needs --matches_dir");
@@ -34,7 +45,7 @@ void RunReconstruct(const ReconstructArguments& args) {
   const sfm_pruning::ReconstructionInput input =
       args.database.empty()
           ? sfm_pruning::ReadOpenMvgInput(args.sfm_data, args.matches_dir, args.match_file, ProgressOnStderr())
-          : sfm_pruning::ReadColmapInput(args.database);
+          : DatabaseInput(args.database, args.image_path);
   const double read_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   RunReconstruction(args.engine, input, args.output, read_seconds);
 }
@@ -52,6 +63,8 @@ void AddReconstructCommand(CLI::App& app) {
   cmd->add_option("--matches_dir", args->matches_dir, "Folder of the .feat files and the match file");
   cmd->add_option("--match_file", args->match_file, "Match file (default: matches.e/f/putative .bin/.txt)");
   cmd->add_option("--database,--database_path", args->database, "COLMAP database.db");
+  cmd->add_option("--image_path", args->image_path,
+                  "With --database: image folder (the points are coloured from its images when they are all there)");
   cmd->add_option("--output,--output_path,-o", args->output, "Output folder")->required();
   AddOverwriteFlag(cmd, &args->overwrite, OverwriteMeans::kWriteInto);
   AddEngineOptions(cmd, &args->engine);

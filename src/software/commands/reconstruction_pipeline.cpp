@@ -78,7 +78,8 @@ nlohmann::json TimingsJson(const EngineSettings& settings, const sfm_pruning::Vi
     json["prune_trust_prior_edges"] = settings.pruning.trust_prior_edges;
   }
   json["seed"] = settings.seed;
-  json["num_threads"] = settings.num_threads;
+  json["num_threads"] = FrontEndThreads(settings.num_threads);
+  json["solver_threads"] = settings.solver_threads;
   json["stages"] = std::move(stages);
   json["engine_seconds"] = engine.total_seconds;
   json["counts"] = {{"views", model.views.size()},
@@ -177,6 +178,7 @@ sfm_pruning::ReconstructionOptions ToReconstructionOptions(const EngineSettings&
   options.engine = sfm_pruning::ParseReconstructionEngine(settings.engine);
   options.seed = settings.seed;
   options.num_threads = settings.num_threads;
+  options.solver_threads = settings.solver_threads;
   options.positioning = settings.positioning == "GLOMAP" ? sfm_pruning::PositioningMethod::kGlobalPositioning
                                                          : sfm_pruning::PositioningMethod::kTranslationAveraging;
   options.positioning_tracks = settings.positioning_tracks == "MATCH_STARS" ? sfm_pruning::PositioningTracks::kMatchStars
@@ -195,8 +197,15 @@ void AddSolverOptions(CLI::App* cmd, EngineSettings* settings) {
       ->check(SeedValue())
       ->capture_default_str();
   cmd->add_option("--num_threads", settings->num_threads,
-                  "Worker threads. 1 (the default) gives bitwise reproducible models; with more, Ceres's "
-                  "threaded sums make the last digits differ from run to run")
+                  "Worker threads of the stages whose result does not depend on their number (features, "
+                  "matching, verification, the pruning's community solves and subgraph pairs, point colours); "
+                  "0, the default: every core")
+      ->check(NonNegativeValue())
+      ->capture_default_str();
+  cmd->add_option("--solver_threads", settings->solver_threads,
+                  "Ceres threads of positioning and bundle adjustment. 1, the default, keeps every output "
+                  "bitwise reproducible whatever --num_threads is; more are faster on large scenes, but Ceres's "
+                  "threaded sums then change the last digits from run to run")
       ->check(PositiveValue())
       ->capture_default_str();
   cmd->add_option("--positioning", settings->positioning,
@@ -298,7 +307,7 @@ void RunReconstruction(const EngineSettings& settings, const sfm_pruning::Recons
          "): " + dropped.at("reason").get<std::string>());
   }
   const auto coloring_start = std::chrono::steady_clock::now();
-  ColorPointsFromImages(settings.num_threads, &model);
+  ColorPointsFromImages(FrontEndThreads(settings.num_threads), &model);
   stage_list.push_back({{"stage", "point colours"}, {"seconds", SecondsSince(coloring_start)}});
   WriteModelOutputs(model, input.features, output);
   sfm_pruning::WriteRunViewGraph(result.view_graph, output / "view_graph.json");

@@ -23,7 +23,8 @@ namespace prunesfm {
 struct EngineSettings {
   std::string engine = "GLOBAL";
   uint64_t seed = 0;
-  int num_threads = 1;
+  int num_threads = 0;     // 0: every core (ReconstructionOptions::num_threads)
+  int solver_threads = 1;  // ReconstructionOptions::solver_threads
   std::string positioning = "GLOMAP";  // or TRANSLATION_AVERAGING
   std::string positioning_tracks = "CONNECTED";  // or MATCH_STARS
   // Three starts, each screened for 25 iterations (docs/global.md, "Random starts"), as
@@ -36,7 +37,7 @@ struct EngineSettings {
   IntrinsicsSettings intrinsics;                 // reconstruct and run
 };
 
-// Adds --seed, --num_threads, --positioning, --positioning_tracks, --positioning_random_starts,
+// Adds --seed, --num_threads, --solver_threads, --positioning, --positioning_tracks, --positioning_random_starts,
 // --positioning_start_screening and the verification options (--max_epipolar_error_deg,
 // --verification_precision_ratio) to `cmd`.
 void AddSolverOptions(CLI::App* cmd, EngineSettings* settings);

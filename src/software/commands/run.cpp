@@ -30,7 +30,6 @@ struct RunArguments {
   bool force = false;
   bool no_colmap_database = false;
   bool overwrite = false;
-  bool num_threads_given = false;
   std::string images;
   std::string output_dir;
   std::string database;
@@ -67,7 +66,7 @@ FrontEndStageTiming RunOrReuse(RunManifest* manifest, const std::string& name, c
 }
 
 void RunFromImages(const RunArguments& args, const fs::path& images, const fs::path& out) {
-  const int threads = FrontEndThreads(args.num_threads_given ? args.engine.num_threads : 0);
+  const int threads = FrontEndThreads(args.engine.num_threads);
   const fs::path matches_dir = out / "matches";
   const fs::path sfm_path = matches_dir / "sfm_data.json";
   PrepareRunFolder(out, args.overwrite);
@@ -189,12 +188,7 @@ void AddRunCommand(CLI::App& app) {
   AddInitOptions(cmd, &args->init);
   AddFeatureOptions(cmd, &args->features);
   AddMatchOptions(cmd, &args->match, false);
-  cmd->callback([args, cmd]() {
-    // From images, the front-end stages use every core unless --num_threads is given: their
-    // results do not depend on it (the engine's default stays 1 thread, bitwise reproducible).
-    args->num_threads_given = cmd->count("--num_threads") > 0;
-    RunRun(*args);
-  });
+  cmd->callback([args]() { RunRun(*args); });
 }
 
 }  // namespace prunesfm
