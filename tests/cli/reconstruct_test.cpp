@@ -71,6 +71,13 @@ TEST(CliReconstruct, RunFromColmapDatabase) {
                    (scratch / "images").string(), "--output_path", out.string(), "--engine", "GLOBAL"});
   ASSERT_EQ(result.exit_code, 0) << result.err;
   EXPECT_GE(Auc3(out / "sparse" / "0", scratch), 97.0);
+  // The generated scene has no lens distortion: the evidence test holds it (docs/global.md).
+  const nlohmann::json timings = nlohmann::json::parse(std::ifstream(out / "timings.json"));
+  ASSERT_TRUE(timings.contains("distortion_evidence")) << timings.dump();
+  EXPECT_FALSE(timings.at("distortion_evidence").at("kept").get<bool>());
+  EXPECT_LT(timings.at("distortion_evidence").at("statistic").get<double>(),
+            timings.at("distortion_evidence").at("threshold").get<double>());
+  EXPECT_NE(result.err.find("lens distortion held"), std::string::npos) << result.err;
 }
 
 std::string FileText(const fs::path& path) {

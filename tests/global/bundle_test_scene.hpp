@@ -4,6 +4,7 @@
 // compiles only *_test.cpp files.
 #pragma once
 
+#include <array>
 #include <cmath>
 #include <cstdint>
 #include <random>
@@ -28,6 +29,8 @@ struct SceneOptions {
   // radius: points then cover most of each image, which pins the principal point down.
   Eigen::Vector3d box_half_size = Eigen::Vector3d(5.0, 5.0, 4.0);
   double ring_radius = 12.0;
+  // k1, k2, k3 of intrinsic 1 (radial K3).
+  std::array<double, 3> radial_distortion = {-0.08, 0.01, 0.001};
   uint32_t seed = 7;
 };
 
@@ -69,7 +72,8 @@ inline Scene MakeScene(const SceneOptions& options) {
   scene.radius = options.ring_radius;
   SfmData& data = scene.truth;
   data.intrinsics[0] = CameraIntrinsics::Pinhole(1000, 800, 800.0, 505.0, 395.0);
-  data.intrinsics[1] = CameraIntrinsics(CameraModel::kPinholeRadialK3, 1000, 800, {900.0, 495.0, 405.0, -0.08, 0.01, 0.001});
+  data.intrinsics[1] = CameraIntrinsics(CameraModel::kPinholeRadialK3, 1000, 800, {900.0, 495.0, 405.0, options.radial_distortion[0], options.radial_distortion[1],
+                                     options.radial_distortion[2]});
   for (int k = 0; k < options.num_cameras; ++k) {
     const double azimuth = 2.0 * M_PI * k / options.num_cameras;
     const Eigen::Vector3d center(scene.radius * std::cos(azimuth), scene.radius * std::sin(azimuth),

@@ -127,33 +127,59 @@ bool PositionViews(const GlobalEngineOptions& options, const ViewGraph& kept,
   return report->positioning.success || Fail("positioning: " + report->positioning.message, report);
 }
 
-// 4. Bundle adjustment rounds, then the final adjustment and filter; then the weak views go.
+// 4a. The rounds of adjust -> filter -> retriangulate, then the last adjust -> filter, with `bundle`.
+bool RunBundleSchedule(const GlobalEngineOptions& options, const BundleAdjustmentOptions& bundle, SfmData* out,
+                       GlobalEngineReport* report, const ProgressCallback& progress) {
+  const size_t num_adjustments = static_cast<size_t>(std::max(options.num_bundle_rounds, 0)) + 1;
+  for (size_t round = 0; round < num_adjustments; ++round) {
+    ReportProgress(progress, "bundle adjustment", round, num_adjustments);
+    BundleAdjustmentOptions round_options = bundle;
+    const bool is_last = round + 1 == num_adjustments;
+    round_options.function_tolerance =
+        is_last ? options.final_function_tolerance : options.intermediate_function_tolerance;
+    if (!is_last) {
+      round_options.max_num_iterations =
+          std::min(round_options.max_num_iterations, options.intermediate_max_num_iterations);
+    }
+    report->bundle_adjustments.push_back(
+        round == 0 ? AdjustBundleOnSubset(round_options, options.first_bundle_subsampling, options.retriangulation, out)
+                   : AdjustBundle(round_options, out));
+    if (!report->bundle_adjustments.back().success) return false;
+    const StructureFilteringResult filtered = FilterStructure(options.filtering, out);
+    if (round + 1 < num_adjustments) RetriangulateLandmarks(options.retriangulation, &filtered.removed, out);
+  }
+  ReportProgress(progress, "bundle adjustment", num_adjustments, num_adjustments);
+  return true;
+}
+
+// 4. Bundle adjustment; then the weak views go. With the distortion evidence test, the schedule
+// runs with the distortion held; when one more adjustment with it free pays BIC's price, the data
+// determine it, and the schedule runs again from the positioned model with it free throughout
+// (a distortion estimated from the start, as without the test, so the filter judges the
+// observations with it).
 bool AdjustAndFilter(const GlobalEngineOptions& options, SfmData* out, GlobalEngineReport* report,
                      std::map<IndexT, std::string>* dropped, const ProgressCallback& progress) {
   BundleAdjustmentOptions bundle = options.bundle;
   bundle.num_threads = options.num_threads;
-  const size_t num_adjustments = static_cast<size_t>(std::max(options.num_bundle_rounds, 0)) + 1;
+  const bool test_distortion = options.distortion_needs_evidence && bundle.refine_distortion;
   bool adjusted = true;
   Timed("bundle adjustment", report, [&]() {
-    for (size_t round = 0; round < num_adjustments && adjusted; ++round) {
-      ReportProgress(progress, "bundle adjustment", round, num_adjustments);
-      BundleAdjustmentOptions round_options = bundle;
-      const bool is_last = round + 1 == num_adjustments;
-      round_options.function_tolerance =
-          is_last ? options.final_function_tolerance : options.intermediate_function_tolerance;
-      if (!is_last) {
-        round_options.max_num_iterations =
-            std::min(round_options.max_num_iterations, options.intermediate_max_num_iterations);
-      }
-      report->bundle_adjustments.push_back(
-          round == 0 ? AdjustBundleOnSubset(round_options, options.first_bundle_subsampling, options.retriangulation, out)
-                     : AdjustBundle(round_options, out));
-      adjusted = report->bundle_adjustments.back().success;
-      if (!adjusted) break;
-      const StructureFilteringResult filtered = FilterStructure(options.filtering, out);
-      if (round + 1 < num_adjustments) RetriangulateLandmarks(options.retriangulation, &filtered.removed, out);
+    if (!test_distortion) {
+      adjusted = RunBundleSchedule(options, bundle, out, report, progress);
+      return;
     }
-    ReportProgress(progress, "bundle adjustment", num_adjustments, num_adjustments);
+    const SfmData positioned = *out;
+    BundleAdjustmentOptions held = bundle;
+    held.refine_distortion = false;
+    adjusted = RunBundleSchedule(options, held, out, report, progress);
+    if (!adjusted) return;
+    BundleAdjustmentOptions free = bundle;
+    free.function_tolerance = options.final_function_tolerance;
+    report->distortion = SelectDistortionByEvidence(free, out);
+    if (report->distortion.kept) {
+      *out = positioned;
+      adjusted = RunBundleSchedule(options, bundle, out, report, progress);
+    }
   });
   if (!adjusted) return Fail("bundle adjustment: " + report->bundle_adjustments.back().message, report);
   report->final_rms_px = report->bundle_adjustments.back().final_rms_px;

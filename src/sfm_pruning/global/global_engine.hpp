@@ -7,6 +7,8 @@
 //   -> num_bundle_rounds x (bundle adjustment -> structure filtering -> retriangulation), the
 //      first adjustment on a well-distributed subset of the landmarks
 //   -> final bundle adjustment and structure filtering
+//      (with the distortion evidence test: with the distortion held, then one adjustment with it
+//      free; if BIC says the data determine it, the schedule again, distortion free throughout)
 //   -> views left with too few observations are unregistered.
 //
 // No I/O: the pruning engine calls it once per subgraph. Deterministic for a seed with
@@ -19,6 +21,7 @@
 #include <vector>
 
 #include "sfm_pruning/global/bundle_adjustment.hpp"
+#include "sfm_pruning/global/distortion_evidence.hpp"
 #include "sfm_pruning/global/global_positioning.hpp"
 #include "sfm_pruning/global/match_star_tracks.hpp"
 #include "sfm_pruning/global/retriangulation.hpp"
@@ -97,6 +100,10 @@ struct GlobalEngineOptions {
   // on sequential_large@2000 they took 72 and 61 iterations at 1.2-1.4 s each to reach 1e-4, most
   // of them shaving the last 3 % off the cost, which the filter then changes anyway.
   int intermediate_max_num_iterations = 25;
+  // When bundle.refine_distortion: adjust with the distortion held, then keep a last adjustment
+  // with it free only if the cost it saves pays BIC's price (distortion_evidence.hpp).
+  // false: refine it from the first adjustment on.
+  bool distortion_needs_evidence = true;
   // false: stop after the positioning (no adjustment, no filter: the model audit's quick solve).
   bool bundle_adjust = true;
   // After the final filter, views observing fewer landmarks than this lose their pose.
@@ -150,6 +157,7 @@ struct GlobalEngineReport {
   TrackBuildingResult track_counts;  // tracks themselves cleared
   PositioningResult positioning;
   std::vector<BundleAdjustmentResult> bundle_adjustments;
+  DistortionEvidence distortion;  // tested only when the distortion was refined
 };
 
 // Reconstructs the views of `graph` (valid edges only; the graph is copied, not modified).

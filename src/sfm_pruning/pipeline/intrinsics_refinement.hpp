@@ -31,6 +31,9 @@ struct IntrinsicsRefinementOptions {
   // principal point is a guess too (the image centre), hence refined by default.
   bool focal = true;
   bool distortion = true;
+  // The refined distortion is kept only when the data determine it (GlobalEngineOptions::
+  // distortion_needs_evidence, global/distortion_evidence.hpp).
+  bool distortion_needs_evidence = true;
   bool principal_point = true;
   // When bundle adjustment moves a refined focal by more than this fraction of the focal the
   // pairs were verified with, verification and engine run once more with the refined intrinsics.

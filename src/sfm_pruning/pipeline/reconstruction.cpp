@@ -84,6 +84,7 @@ Solution Solve(const ReconstructionOptions& options, const ReconstructionInput& 
   if (pruned) {
     PrunedGlobalEngineOptions engine_options = PrunedEngineOptions(options);
     engine_options.engine.bundle = bundle;  // the final solve; the per-community solves hold the intrinsics
+    engine_options.engine.distortion_needs_evidence = options.intrinsics.distortion_needs_evidence;
     PrunedGlobalEngineReport report;
     RunPrunedGlobalEngine(engine_options, graph, scene, input.features, &solution.model, &report, progress);
     solution.report = std::move(report.engine);
@@ -91,6 +92,7 @@ Solution Solve(const ReconstructionOptions& options, const ReconstructionInput& 
   } else {
     GlobalEngineOptions engine_options = EngineOptions(options);
     engine_options.bundle = bundle;
+    engine_options.distortion_needs_evidence = options.intrinsics.distortion_needs_evidence;
     if (schedule == Schedule::kFocalSearch) engine_options = WithFocalSearchSchedule(engine_options);
     RunGlobalEngine(engine_options, graph, scene, input.features, &solution.model, &solution.report,
                     progress);

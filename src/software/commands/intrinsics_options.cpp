@@ -24,6 +24,12 @@ void AddIntrinsicsOptions(CLI::App* cmd, IntrinsicsSettings* settings) {
                    "For those cameras: refine the distortion coefficients in bundle adjustment")
       ->capture_default_str();
   group
+      ->add_option("--distortion_needs_evidence", settings->distortion_needs_evidence,
+                   "With --refine_distortion: adjust with the distortion held, then keep a last adjustment with it\n"
+                   "free only when the cost it saves pays the Bayesian information criterion's price k ln(n) (free\n"
+                   "coefficients can bend a ring or a walk at no cost; docs/global.md). false: refine it throughout")
+      ->capture_default_str();
+  group
       ->add_option("--refine_principal_point", settings->principal_point,
                    "For those cameras: refine the principal point in bundle adjustment")
       ->capture_default_str();
@@ -34,6 +40,7 @@ sfm_pruning::IntrinsicsRefinementOptions ToIntrinsicsOptions(const IntrinsicsSet
   options.cameras = sfm_pruning::ParseIntrinsicsCameras(settings.cameras);
   options.focal = settings.focal;
   options.distortion = settings.distortion;
+  options.distortion_needs_evidence = settings.distortion_needs_evidence;
   options.principal_point = settings.principal_point;
   options.refocus_threshold = settings.refocus_threshold;
   return options;

@@ -23,11 +23,13 @@ struct IntrinsicsSettings {
   std::string cameras = "AUTO";  // AUTO, GUESSED, ALL or NONE
   bool focal = true;
   bool distortion = true;
+  bool distortion_needs_evidence = true;
   bool principal_point = true;
   double refocus_threshold = 0.05;
 };
 
-// Adds --refine_intrinsics, --refine_focal, --refine_distortion, --refine_principal_point.
+// Adds --refine_intrinsics, --refine_focal, --refine_distortion, --distortion_needs_evidence,
+// --refine_principal_point.
 void AddIntrinsicsOptions(CLI::App* cmd, IntrinsicsSettings* settings);
 
 // The library's options (pipeline/intrinsics_refinement.hpp) for the settings the flags filled.

@@ -114,6 +114,13 @@ nlohmann::json TimingsJson(const EngineSettings& settings, const sfm_pruning::Vi
                        {"consistent_rays_per_start", engine.positioning.consistent_constraints_per_start},
                        {"termination", engine.positioning.message}}},
                      {"bundle_adjustments", std::move(adjustments)}};
+  if (engine.distortion.tested) {
+    json["distortion_evidence"] = {{"kept", engine.distortion.kept},
+                                   {"statistic", engine.distortion.statistic},
+                                   {"threshold", engine.distortion.threshold},
+                                   {"parameters", engine.distortion.num_parameters},
+                                   {"residuals", engine.distortion.num_residuals}};
+  }
   json["dropped_views"] = std::move(dropped);
   return json;
 }
@@ -321,6 +328,13 @@ void RunReconstruction(const EngineSettings& settings, const sfm_pruning::Recons
   Info("registered " + std::to_string(report.num_registered_views) + " of " + std::to_string(input.scene.views.size()) +
        " views, " + std::to_string(report.num_landmarks) + " points, RMS " + std::to_string(report.final_rms_px) +
        " px; " + stages);
+  if (report.distortion.tested) {
+    char evidence[160];
+    std::snprintf(evidence, sizeof(evidence), "lens distortion %s: its adjustment saved %.1f, the criterion asks %.1f",
+                  report.distortion.kept ? "estimated" : "held (the data do not determine it)",
+                  report.distortion.statistic, report.distortion.threshold);
+    Info(evidence);
+  }
   Info("wrote " + (output / "sfm_data.json").string() + ", " + (output / "sparse" / "0").string() +
        ", cloud_and_poses.ply, timings.json, view_graph.json");
 }
