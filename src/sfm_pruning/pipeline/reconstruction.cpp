@@ -1,13 +1,12 @@
 #include "sfm_pruning/pipeline/reconstruction.hpp"
 
-#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <stdexcept>
-#include <thread>
 #include <utility>
 
 #include "sfm_pruning/util/error.hpp"
+#include "sfm_pruning/util/parallel_for.hpp"
 
 namespace sfm_pruning {
 namespace {
@@ -138,10 +137,7 @@ ReconstructionEngine ParseReconstructionEngine(const std::string& name) {
   throw std::invalid_argument("unknown engine '" + name + "' (GLOBAL or GLOBAL_PRUNED)");
 }
 
-int ReconstructionOptions::ResolvedThreads() const {
-  if (num_threads > 0) return num_threads;
-  return static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
-}
+int ReconstructionOptions::ResolvedThreads() const { return ResolveThreadCount(num_threads); }
 
 void ReconstructionOptions::Check() const {
   if (num_threads < 0) throw std::invalid_argument("ReconstructionOptions::num_threads must be >= 0 (0: every core)");

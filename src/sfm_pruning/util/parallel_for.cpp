@@ -48,4 +48,9 @@ void ParallelFor(size_t count, int num_threads, const std::function<void(size_t)
   if (first_error) std::rethrow_exception(first_error);
 }
 
+int ResolveThreadCount(int requested) {
+  if (requested > 0) return requested;
+  return static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
+}
+
 }  // namespace sfm_pruning

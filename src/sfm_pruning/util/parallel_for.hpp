@@ -17,4 +17,8 @@ namespace sfm_pruning {
 void ParallelFor(size_t count, int num_threads, const std::function<void(size_t)>& task,
                  const ProgressCallback& progress = {}, const std::string& stage = "");
 
+// A thread-count option's value: `requested` when it is positive, every core (at least one) when
+// it is 0, the default of the options whose results do not depend on the count.
+int ResolveThreadCount(int requested);
+
 }  // namespace sfm_pruning

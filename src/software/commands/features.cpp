@@ -3,6 +3,7 @@
 #include <CLI/CLI.hpp>
 
 #include "sfm_pruning/io/openmvg_sfm_data.hpp"
+#include "sfm_pruning/util/parallel_for.hpp"
 #include "software/cli_checks.hpp"
 #include "software/commands.hpp"
 #include "software/commands/front_end_stages.hpp"
@@ -21,7 +22,7 @@ void RunFeatures(const FeaturesArguments& args) {
   using sfm_pruning::SfmDataParts;
   const sfm_pruning::SfmData scene =
       sfm_pruning::ReadSfmData(args.sfm_data, SfmDataParts::kViews | SfmDataParts::kIntrinsics);
-  RunFeatureStage(args.settings, scene, args.output, FrontEndThreads(args.num_threads));
+  RunFeatureStage(args.settings, scene, args.output, sfm_pruning::ResolveThreadCount(args.num_threads));
 }
 
 }  // namespace

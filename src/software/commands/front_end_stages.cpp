@@ -3,7 +3,6 @@
 #include <CLI/CLI.hpp>
 
 #include <sstream>
-#include <thread>
 
 #include "sfm_pruning/features/descriptor_matching.hpp"
 #include "sfm_pruning/features/image_listing.hpp"
@@ -162,10 +161,6 @@ std::string SettingsKey(const MatchSettings& s) {
          "\nverification_precision_ratio=" + Fixed(s.verification_precision_ratio, 6) + "\n";
 }
 
-int FrontEndThreads(int requested) {
-  if (requested > 0) return requested;
-  return static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
-}
 
 void RunInitStage(const InitSettings& settings, const fs::path& image_dir, const fs::path& sfm_path,
                   int num_threads) {

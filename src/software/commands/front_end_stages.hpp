@@ -71,9 +71,6 @@ std::string SettingsKey(const InitSettings& settings);
 std::string SettingsKey(const FeatureSettings& settings);
 std::string SettingsKey(const MatchSettings& settings);
 
-// Threads of the front-end stages: `requested` when > 0, else every core (their results do not
-// depend on the count).
-int FrontEndThreads(int requested);
 
 // image_dir -> sfm_path (sfm_data.json) + camera_priors.json beside it. Reports skipped images
 // and the cameras on stderr.

@@ -2,6 +2,7 @@
 // like OpenMVG's SfMInit_ImageListing.
 #include <CLI/CLI.hpp>
 
+#include "sfm_pruning/util/parallel_for.hpp"
 #include "software/cli_checks.hpp"
 #include "software/commands.hpp"
 #include "software/commands/front_end_stages.hpp"
@@ -32,7 +33,7 @@ void AddInitCommand(CLI::App& app) {
   cmd->add_option("--num_threads", args->num_threads, "Threads (default: every core)")->check(PositiveValue());
   AddInitOptions(cmd, &args->settings);
   cmd->callback([args]() {
-    RunInitStage(args->settings, args->image_dir, args->output, FrontEndThreads(args->num_threads));
+    RunInitStage(args->settings, args->image_dir, args->output, sfm_pruning::ResolveThreadCount(args->num_threads));
   });
 }
 

@@ -4,6 +4,7 @@
 
 #include "sfm_pruning/io/openmvg_features.hpp"
 #include "sfm_pruning/io/openmvg_sfm_data.hpp"
+#include "sfm_pruning/util/parallel_for.hpp"
 #include "software/cli_checks.hpp"
 #include "software/cli_support.hpp"
 #include "software/commands.hpp"
@@ -27,7 +28,7 @@ void RunMatch(const MatchArguments& args) {
   RefuseOutputOverInput(args.colmap_database, {args.sfm_data, args.matches_dir});
   sfm_pruning::FeaturesPerView features =
       sfm_pruning::ReadOpenMvgFeatures(scene, args.matches_dir, true, ProgressOnStderr());
-  RunMatchStage(args.settings, scene, &features, args.matches_dir, FrontEndThreads(args.num_threads),
+  RunMatchStage(args.settings, scene, &features, args.matches_dir, sfm_pruning::ResolveThreadCount(args.num_threads),
                 args.colmap_database);
 }
 

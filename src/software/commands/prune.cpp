@@ -23,6 +23,7 @@
 #include "sfm_pruning/io/colmap_database.hpp"
 #include "sfm_pruning/io/openmvg_matches.hpp"
 #include "sfm_pruning/util/error.hpp"
+#include "sfm_pruning/util/parallel_for.hpp"
 #include "software/cli_support.hpp"
 #include "software/commands.hpp"
 #include "software/commands/front_end_stages.hpp"
@@ -216,7 +217,7 @@ void RunPrune(const PruneArguments& args) {
                       {"matches_dropped", NumMatches(changes.dropped_matches)},
                       {"rejected_by_verification_kept", build.rejected_pairs.size()},
                       {"seed", args.settings.seed},
-                      {"num_threads", FrontEndThreads(args.settings.num_threads)},
+                      {"num_threads", sfm_pruning::ResolveThreadCount(args.settings.num_threads)},
                       {"solver_threads", args.settings.solver_threads},
                       {"seconds",
                        {{"read input", read_seconds},

@@ -23,13 +23,6 @@ struct ReconstructArguments {
   bool overwrite = false;
 };
 
-// The database's input, its images (for the point colours) under `image_path` when given.
-sfm_pruning::ReconstructionInput DatabaseInput(const std::string& database, const std::string& image_path) {
-  sfm_pruning::ReconstructionInput input = sfm_pruning::ReadColmapInput(database);
-  input.scene.root_path = image_path;
-  return input;
-}
-
 void RunReconstruct(const ReconstructArguments& args) {
   if (args.sfm_data.empty() == args.database.empty()) {
     throw sfm_pruning::Error("reconstruct: give either --sfm_data with --matches_dir, or --database");
@@ -45,7 +38,7 @@ void RunReconstruct(const ReconstructArguments& args) {
   const sfm_pruning::ReconstructionInput input =
       args.database.empty()
           ? sfm_pruning::ReadOpenMvgInput(args.sfm_data, args.matches_dir, args.match_file, ProgressOnStderr())
-          : DatabaseInput(args.database, args.image_path);
+          : ReadDatabaseInput(args.database, args.image_path);
   const double read_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   RunReconstruction(args.engine, input, args.output, read_seconds);
 }

@@ -19,6 +19,7 @@
 #include "sfm_pruning/report/run_view_graph.hpp"
 #include "sfm_pruning/util/atomic_file.hpp"
 #include "sfm_pruning/util/error.hpp"
+#include "sfm_pruning/util/parallel_for.hpp"
 #include "software/cli_checks.hpp"
 #include "software/cli_support.hpp"
 #include "software/commands/front_end_stages.hpp"
@@ -78,7 +79,7 @@ nlohmann::json TimingsJson(const EngineSettings& settings, const sfm_pruning::Vi
     json["prune_trust_prior_edges"] = settings.pruning.trust_prior_edges;
   }
   json["seed"] = settings.seed;
-  json["num_threads"] = FrontEndThreads(settings.num_threads);
+  json["num_threads"] = sfm_pruning::ResolveThreadCount(settings.num_threads);
   json["solver_threads"] = settings.solver_threads;
   json["stages"] = std::move(stages);
   json["engine_seconds"] = engine.total_seconds;
@@ -178,6 +179,12 @@ void AddEngineOptions(CLI::App* cmd, EngineSettings* settings) {
   AddSolverOptions(cmd, settings);
   AddIntrinsicsOptions(cmd, &settings->intrinsics);
   AddPruningOptions(cmd, &settings->pruning, true);
+}
+
+sfm_pruning::ReconstructionInput ReadDatabaseInput(const std::string& database, const std::string& image_path) {
+  sfm_pruning::ReconstructionInput input = sfm_pruning::ReadColmapInput(database);
+  input.scene.root_path = image_path;
+  return input;
 }
 
 sfm_pruning::ReconstructionOptions ToReconstructionOptions(const EngineSettings& settings) {
@@ -314,7 +321,7 @@ void RunReconstruction(const EngineSettings& settings, const sfm_pruning::Recons
          "): " + dropped.at("reason").get<std::string>());
   }
   const auto coloring_start = std::chrono::steady_clock::now();
-  ColorPointsFromImages(FrontEndThreads(settings.num_threads), &model);
+  ColorPointsFromImages(sfm_pruning::ResolveThreadCount(settings.num_threads), &model);
   stage_list.push_back({{"stage", "point colours"}, {"seconds", SecondsSince(coloring_start)}});
   WriteModelOutputs(model, input.features, output);
   sfm_pruning::WriteRunViewGraph(result.view_graph, output / "view_graph.json");

@@ -37,6 +37,9 @@ struct EngineSettings {
   IntrinsicsSettings intrinsics;                 // reconstruct and run
 };
 
+// A COLMAP database's input; its images (the points' colours) under `image_path` when given.
+sfm_pruning::ReconstructionInput ReadDatabaseInput(const std::string& database, const std::string& image_path);
+
 // Adds --seed, --num_threads, --solver_threads, --positioning, --positioning_tracks, --positioning_random_starts,
 // --positioning_start_screening and the verification options (--max_epipolar_error_deg,
 // --verification_precision_ratio) to `cmd`.

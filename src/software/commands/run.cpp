@@ -10,6 +10,7 @@
 #include "sfm_pruning/io/openmvg_features.hpp"
 #include "sfm_pruning/io/openmvg_sfm_data.hpp"
 #include "sfm_pruning/util/error.hpp"
+#include "sfm_pruning/util/parallel_for.hpp"
 #include "software/cli_support.hpp"
 #include "software/commands.hpp"
 #include "software/commands/default_dataset.hpp"
@@ -45,8 +46,7 @@ void RunFromDatabase(const RunArguments& args) {
   if (args.output.empty()) throw Error("run: --database needs --output_path");
   PrepareRunFolder(args.output, args.overwrite);
   const auto start = std::chrono::steady_clock::now();
-  sfm_pruning::ReconstructionInput input = sfm_pruning::ReadColmapInput(args.database);
-  input.scene.root_path = args.image_path;
+  const sfm_pruning::ReconstructionInput input = ReadDatabaseInput(args.database, args.image_path);
   RunReconstruction(args.engine, input, args.output, SecondsSince(start));
 }
 
@@ -66,7 +66,7 @@ FrontEndStageTiming RunOrReuse(RunManifest* manifest, const std::string& name, c
 }
 
 void RunFromImages(const RunArguments& args, const fs::path& images, const fs::path& out) {
-  const int threads = FrontEndThreads(args.engine.num_threads);
+  const int threads = sfm_pruning::ResolveThreadCount(args.engine.num_threads);
   const fs::path matches_dir = out / "matches";
   const fs::path sfm_path = matches_dir / "sfm_data.json";
   PrepareRunFolder(out, args.overwrite);
