@@ -91,13 +91,13 @@ TEST(ReportDrawing, RemovalSummaryGroupsCutsByReasonAndSubgraphPair) {
   // One cut by the model audit instead, and one removed edge inside subgraph 1.
   for (RunGraphEdge& edge : graph.edges) {
     if (edge.removed) {
-      edge = {edge.i, edge.j, edge.inliers, true, "model_disagreement", 0.05, 0.2, "agreeing_share"};
+      edge = {edge.i, edge.j, edge.inliers, true, "model_disagreement", 0.05, 0.2, "agreeing_share", {}};
       break;
     }
   }
   RunGraphEdge& inside = graph.edges.front();
   ASSERT_FALSE(inside.removed);
-  inside = {inside.i, inside.j, inside.inliers, true, "landmark_disagreement", 3, 5, "matches_left"};
+  inside = {inside.i, inside.j, inside.inliers, true, "landmark_disagreement", 3, 5, "matches_left", {}};
 
   const RemovalSummary summary = SummariseRemovals(graph);
   EXPECT_EQ(summary.edges, graph.edges.size());

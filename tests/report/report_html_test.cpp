@@ -1,6 +1,7 @@
 // The run folder record and the HTML page: round trips, one-line errors, determinism, content.
 #include <gtest/gtest.h>
 
+#include <Eigen/Geometry>
 #include <fstream>
 #include <regex>
 
@@ -24,7 +25,9 @@ std::string ErrorOf(const std::function<void()>& call) {
 
 TEST(ReportHtml, ViewGraphRecordRoundTrips) {
   const fs::path dir = ScratchDir("report_view_graph_round_trip");
-  const RunViewGraph graph = TwoSubgraphGraph(RingScene(10));
+  RunViewGraph graph = TwoSubgraphGraph(RingScene(10));
+  graph.edges.front().relative_pose = {Eigen::AngleAxisd(0.3, Eigen::Vector3d(1, 2, 3).normalized()).toRotationMatrix(),
+                                       Eigen::Vector3d(0.6, 0.0, -0.8)};
   WriteRunViewGraph(graph, dir / "view_graph.json");
   const RunViewGraph read = ReadRunViewGraph(dir / "view_graph.json");
   ASSERT_EQ(read.views.size(), 10u);
@@ -38,6 +41,8 @@ TEST(ReportHtml, ViewGraphRecordRoundTrips) {
     EXPECT_EQ(read.edges[k].reason, graph.edges[k].reason);
     EXPECT_EQ(read.edges[k].value, graph.edges[k].value);
     EXPECT_EQ(read.edges[k].measure, graph.edges[k].measure);
+    EXPECT_LT((read.edges[k].relative_pose.rotation - graph.edges[k].relative_pose.rotation).norm(), 1e-12);
+    EXPECT_LT((read.edges[k].relative_pose.translation - graph.edges[k].relative_pose.translation).norm(), 1e-12);
   }
 }
 

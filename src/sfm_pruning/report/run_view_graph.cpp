@@ -1,6 +1,9 @@
 #include "sfm_pruning/report/run_view_graph.hpp"
 
+#include <array>
 #include <map>
+
+#include <Eigen/Geometry>
 
 #include "sfm_pruning/report/json_file.hpp"
 #include "sfm_pruning/util/atomic_file.hpp"
@@ -45,6 +48,7 @@ RunViewGraph MakeRunViewGraph(const std::string& engine, const ViewGraph& graph,
     record.i = pair.first;
     record.j = pair.second;
     record.inliers = edge.matches.size();
+    record.relative_pose = edge.relative_pose;
     const auto cut = removed.find(pair);
     if (cut != removed.end()) {
       record.removed = true;
@@ -65,7 +69,14 @@ void WriteRunViewGraph(const RunViewGraph& graph, const std::filesystem::path& p
   }
   nlohmann::ordered_json edges = nlohmann::ordered_json::array();
   for (const RunGraphEdge& edge : graph.edges) {
-    nlohmann::ordered_json record = {{"i", edge.i}, {"j", edge.j}, {"inliers", edge.inliers}, {"removed", edge.removed}};
+    const Eigen::Quaterniond q(edge.relative_pose.rotation);
+    const Eigen::Vector3d& t = edge.relative_pose.translation;
+    nlohmann::ordered_json record = {{"i", edge.i},
+                                     {"j", edge.j},
+                                     {"inliers", edge.inliers},
+                                     {"removed", edge.removed},
+                                     {"rotation", {q.w(), q.x(), q.y(), q.z()}},
+                                     {"translation", {t.x(), t.y(), t.z()}}};
     if (edge.removed) {
       record["reason"] = edge.reason;
       record["value"] = edge.value;
@@ -101,6 +112,12 @@ RunViewGraph ReadRunViewGraph(const std::filesystem::path& path) {
       record.j = edge.at("j").get<IndexT>();
       record.inliers = edge.at("inliers").get<size_t>();
       record.removed = edge.at("removed").get<bool>();
+      if (edge.contains("rotation")) {  // absent from files written before poses were recorded
+        const auto q = edge.at("rotation").get<std::array<double, 4>>();
+        const auto t = edge.at("translation").get<std::array<double, 3>>();
+        record.relative_pose.rotation = Eigen::Quaterniond(q[0], q[1], q[2], q[3]).normalized().toRotationMatrix();
+        record.relative_pose.translation = Eigen::Vector3d(t[0], t[1], t[2]);
+      }
       if (record.removed) {
         record.reason = edge.at("reason").get<std::string>();
         record.value = edge.at("value").get<double>();

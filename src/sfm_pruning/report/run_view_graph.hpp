@@ -32,6 +32,9 @@ struct RunGraphEdge {
   double value = 0.0;    // measured error of the cut, in the unit of `measure`
   double threshold = 0.0;
   std::string measure;  // EdgeMeasureName of the cut ("degrees", ...); empty in older files
+  // The verified two-view geometry, X_j = R_ij X_i + t_ij with |t_ij| = 1 (sfm/pose.hpp);
+  // absent (identity, zero) in files written before it was recorded.
+  RelativePose relative_pose;
 };
 
 struct RunViewGraph {
@@ -49,7 +52,8 @@ RunViewGraph MakeRunViewGraph(const std::string& engine, const ViewGraph& graph,
                               const ViewGraphPruningReport* pruning);
 
 // JSON: {"engine", "num_subgraphs", "views": [{"view_id", "image", "subgraph"}],
-//        "edges": [{"i", "j", "inliers", "removed", ["reason", "value", "threshold", "measure"]}]}. Atomic.
+//        "edges": [{"i", "j", "inliers", "removed", "rotation": [qw, qx, qy, qz] of R_ij,
+//                   "translation": t_ij, ["reason", "value", "threshold", "measure"]}]}. Atomic.
 void WriteRunViewGraph(const RunViewGraph& graph, const std::filesystem::path& path);
 
 // Throws Error naming the file for unreadable JSON, a missing field, an edge whose ends are not
