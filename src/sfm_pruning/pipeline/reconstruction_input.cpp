@@ -48,4 +48,16 @@ ReconstructionInput ReadColmapInput(const std::filesystem::path& database) {
   return input;
 }
 
+void ReverifyDatabasePairs(ReconstructionInput* input) {
+  if (input->verified.empty()) return;
+  PairwiseMatches to_verify;
+  for (auto& [pair, verified] : input->verified) {
+    auto raw = input->putative.find(pair);
+    const bool has_raw_matches = raw != input->putative.end() && !raw->second.empty();
+    to_verify[pair] = has_raw_matches ? std::move(raw->second) : std::move(verified.inliers);
+  }
+  input->putative = std::move(to_verify);
+  input->verified.clear();
+}
+
 }  // namespace sfm_pruning

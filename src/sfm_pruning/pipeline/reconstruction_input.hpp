@@ -40,4 +40,14 @@ ReconstructionInput ReadOpenMvgInput(const std::filesystem::path& sfm_data,
 // A COLMAP database: its two_view_geometries when it has any, its matches otherwise.
 ReconstructionInput ReadColmapInput(const std::filesystem::path& database);
 
+// Hands the pairs another tool verified (`input->verified`) to this project's own verification:
+// each becomes a putative pair holding its raw matches (the database's `matches` table; its
+// inliers when the database has no raw matches for it), and `verified` is emptied. Pairs the
+// other tool rejected stay out. Why: COLMAP accepts inliers within 4 px of the epipolar line, so
+// inside a true pair of a scene with repeated structure the matches between different copies
+// that lie along the epipolar line pass and later merge copies into one track; the own
+// verification's precise threshold (RelativePoseOptions) drops most of them (docs/global.md,
+// "Verification"). No-op when `verified` is empty.
+void ReverifyDatabasePairs(ReconstructionInput* input);
+
 }  // namespace sfm_pruning

@@ -38,7 +38,7 @@ void RunReconstruct(const ReconstructArguments& args) {
   const sfm_pruning::ReconstructionInput input =
       args.database.empty()
           ? sfm_pruning::ReadOpenMvgInput(args.sfm_data, args.matches_dir, args.match_file, ProgressOnStderr())
-          : ReadDatabaseInput(args.database, args.image_path);
+          : ReadDatabaseInput(args.database, args.image_path, args.engine);
   const double read_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   RunReconstruction(args.engine, input, args.output, read_seconds);
 }

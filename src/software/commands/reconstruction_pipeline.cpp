@@ -176,14 +176,22 @@ void AddEngineOptions(CLI::App* cmd, EngineSettings* settings) {
   cmd->add_option("--engine", settings->engine, "Reconstruction engine")
       ->check(CLI::IsMember({"GLOBAL", "GLOBAL_PRUNED"}))
       ->capture_default_str();
+  cmd->add_option("--reverify_database_pairs", settings->reverify_database_pairs,
+                  "With --database: verify the pairs COLMAP verified again, from their raw matches, with this "
+                  "project's verification instead of taking COLMAP's inliers (its 4 px threshold keeps matches "
+                  "between copies of a repeated structure inside true pairs); false: COLMAP's inliers, each "
+                  "pair's pose re-estimated from them")
+      ->capture_default_str();
   AddSolverOptions(cmd, settings);
   AddIntrinsicsOptions(cmd, &settings->intrinsics);
   AddPruningOptions(cmd, &settings->pruning, true);
 }
 
-sfm_pruning::ReconstructionInput ReadDatabaseInput(const std::string& database, const std::string& image_path) {
+sfm_pruning::ReconstructionInput ReadDatabaseInput(const std::string& database, const std::string& image_path,
+                                                   const EngineSettings& settings) {
   sfm_pruning::ReconstructionInput input = sfm_pruning::ReadColmapInput(database);
   input.scene.root_path = image_path;
+  if (settings.reverify_database_pairs) sfm_pruning::ReverifyDatabasePairs(&input);
   return input;
 }
 
@@ -279,6 +287,12 @@ void RunReconstruction(const EngineSettings& settings, const sfm_pruning::Recons
   const std::optional<sfm_pruning::FocalCalibrationReport>& calibration = result.calibration;
   const std::set<sfm_pruning::IndexT>& refined = result.refined_intrinsics;
   if (!report.success) throw Error(input.source + ": reconstruction failed: " + report.message);
+  // The filtering rounds can drop every camera of a model that never fitted; an empty model is a
+  // failure, not a result.
+  if (model.poses.size() < 2) {
+    throw Error(input.source + ": reconstruction failed: " + std::to_string(model.poses.size()) + " of " +
+                std::to_string(model.views.size()) + " views registered after the final adjustment");
+  }
   fs::create_directories(output);
   BeginOutputs(output);
   if (pruning) {

@@ -33,20 +33,25 @@ struct EngineSettings {
   int positioning_start_screening = 25;  // GlobalEngineOptions::positioning_start_screening_iterations
   double max_epipolar_error_deg = 0.25;  // RelativePoseOptions::max_angular_error_deg
   double verification_precision_ratio = 0.5;  // RelativePoseOptions::precision_check_ratio
+  // A COLMAP database's verified pairs re-verified from their raw matches (ReverifyDatabasePairs;
+  // docs/global.md, "The view graph").
+  bool reverify_database_pairs = true;
   sfm_pruning::ViewGraphPruningOptions pruning;  // GLOBAL_PRUNED and `prune`
   IntrinsicsSettings intrinsics;                 // reconstruct and run
 };
 
-// A COLMAP database's input; its images (the points' colours) under `image_path` when given.
-sfm_pruning::ReconstructionInput ReadDatabaseInput(const std::string& database, const std::string& image_path);
+// A COLMAP database's input; its images (the points' colours) under `image_path` when given; its
+// verified pairs handed to the own verification when `settings.reverify_database_pairs`.
+sfm_pruning::ReconstructionInput ReadDatabaseInput(const std::string& database, const std::string& image_path,
+                                                   const EngineSettings& settings);
 
 // Adds --seed, --num_threads, --solver_threads, --positioning, --positioning_tracks, --positioning_random_starts,
 // --positioning_start_screening and the verification options (--max_epipolar_error_deg,
 // --verification_precision_ratio) to `cmd`.
 void AddSolverOptions(CLI::App* cmd, EngineSettings* settings);
 
-// Adds --engine, the solver options, the intrinsics options (intrinsics_options.hpp) and the
-// pruning options (pruning_options.hpp) to `cmd`.
+// Adds --engine, --reverify_database_pairs, the solver options, the intrinsics options
+// (intrinsics_options.hpp) and the pruning options (pruning_options.hpp) to `cmd`.
 void AddEngineOptions(CLI::App* cmd, EngineSettings* settings);
 
 // The library's options (pipeline/reconstruction.hpp) for the settings the flags filled.

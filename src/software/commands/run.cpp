@@ -46,7 +46,7 @@ void RunFromDatabase(const RunArguments& args) {
   if (args.output.empty()) throw Error("run: --database needs --output_path");
   PrepareRunFolder(args.output, args.overwrite);
   const auto start = std::chrono::steady_clock::now();
-  const sfm_pruning::ReconstructionInput input = ReadDatabaseInput(args.database, args.image_path);
+  const sfm_pruning::ReconstructionInput input = ReadDatabaseInput(args.database, args.image_path, args.engine);
   RunReconstruction(args.engine, input, args.output, SecondsSince(start));
 }
 
