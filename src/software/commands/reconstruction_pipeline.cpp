@@ -179,8 +179,8 @@ void AddEngineOptions(CLI::App* cmd, EngineSettings* settings) {
   cmd->add_option("--reverify_database_pairs", settings->reverify_database_pairs,
                   "With --database: verify the pairs COLMAP verified again, from their raw matches, with this "
                   "project's verification instead of taking COLMAP's inliers (its 4 px threshold keeps matches "
-                  "between copies of a repeated structure inside true pairs); false: COLMAP's inliers, each "
-                  "pair's pose re-estimated from them")
+                  "between copies of a repeated structure inside true pairs); false, the default: COLMAP's "
+                  "inliers, each pair's pose re-estimated from them")
       ->capture_default_str();
   AddSolverOptions(cmd, settings);
   AddIntrinsicsOptions(cmd, &settings->intrinsics);
