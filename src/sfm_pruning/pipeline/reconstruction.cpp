@@ -290,6 +290,13 @@ ReconstructionResult Reconstruct(const ReconstructionOptions& options, const Rec
   }
   result.success = solution.report.success;
   result.message = solution.report.message;
+  // The filtering rounds can drop every camera of a model that never fitted: an empty model is a
+  // failure, not a result.
+  if (result.success && solution.model.poses.size() < 2) {
+    result.success = false;
+    result.message = std::to_string(solution.model.poses.size()) + " of " +
+                     std::to_string(solution.model.views.size()) + " views registered after the final adjustment";
+  }
   result.model = std::move(solution.model);
   result.build = std::move(solution.build);
   result.engine = std::move(solution.report);

@@ -95,7 +95,7 @@ FocalCalibrationReport CalibrateFocals(const ReconstructionOptions& options, con
 
 struct ReconstructionResult {
   bool success = false;
-  std::string message;                            // why the engine failed; empty on success
+  std::string message;  // why the engine failed or kept fewer than two cameras; empty on success
   SfmData model;                                  // posed views, intrinsics as estimated, structure
   ViewGraphBuildReport build;                     // the verification of the final solve
   GlobalEngineReport engine;                      // the final solve
@@ -112,7 +112,7 @@ struct ReconstructionResult {
 };
 
 // Steps 1-5 above. Throws Error naming input.source when there is no edge to solve; a failed
-// engine returns success = false with the reason.
+// engine, or a final model with fewer than two cameras, returns success = false with the reason.
 ReconstructionResult Reconstruct(const ReconstructionOptions& options, const ReconstructionInput& input,
                                  const ProgressCallback& progress = {}, const ReconstructionLog& log = {});
 

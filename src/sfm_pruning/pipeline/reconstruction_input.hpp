@@ -47,7 +47,8 @@ ReconstructionInput ReadColmapInput(const std::filesystem::path& database);
 // inside a true pair of a scene with repeated structure the matches between different copies
 // that lie along the epipolar line pass and later merge copies into one track; the own
 // verification's precise threshold (RelativePoseOptions) drops most of them (docs/global.md,
-// "Verification"). No-op when `verified` is empty.
+// "The view graph", which also says why the CLI leaves it off by default). No-op when `verified`
+// is empty.
 void ReverifyDatabasePairs(ReconstructionInput* input);
 
 }  // namespace sfm_pruning

@@ -161,7 +161,6 @@ std::string SettingsKey(const MatchSettings& s) {
          "\nverification_precision_ratio=" + Fixed(s.verification_precision_ratio, 6) + "\n";
 }
 
-
 void RunInitStage(const InitSettings& settings, const fs::path& image_dir, const fs::path& sfm_path,
                   int num_threads) {
   const sfm_pruning::ImageListing listing =

@@ -71,7 +71,6 @@ std::string SettingsKey(const InitSettings& settings);
 std::string SettingsKey(const FeatureSettings& settings);
 std::string SettingsKey(const MatchSettings& settings);
 
-
 // image_dir -> sfm_path (sfm_data.json) + camera_priors.json beside it. Reports skipped images
 // and the cameras on stderr.
 void RunInitStage(const InitSettings& settings, const std::filesystem::path& image_dir,

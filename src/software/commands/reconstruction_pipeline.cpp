@@ -286,13 +286,7 @@ void RunReconstruction(const EngineSettings& settings, const sfm_pruning::Recons
   const std::optional<sfm_pruning::ViewGraphPruningReport>& pruning = result.pruning;
   const std::optional<sfm_pruning::FocalCalibrationReport>& calibration = result.calibration;
   const std::set<sfm_pruning::IndexT>& refined = result.refined_intrinsics;
-  if (!report.success) throw Error(input.source + ": reconstruction failed: " + report.message);
-  // The filtering rounds can drop every camera of a model that never fitted; an empty model is a
-  // failure, not a result.
-  if (model.poses.size() < 2) {
-    throw Error(input.source + ": reconstruction failed: " + std::to_string(model.poses.size()) + " of " +
-                std::to_string(model.views.size()) + " views registered after the final adjustment");
-  }
+  if (!result.success) throw Error(input.source + ": reconstruction failed: " + result.message);
   fs::create_directories(output);
   BeginOutputs(output);
   if (pruning) {
