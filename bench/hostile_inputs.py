@@ -674,8 +674,8 @@ class Cases:
 
 
 def numeric_options(prunesfm, command):
-    """(--option, FLOAT|INT|UINT) of every numeric option in `prunesfm COMMAND --help`."""
-    text = subprocess.run([prunesfm, command, "--help"], capture_output=True, text=True).stdout
+    """(--option, FLOAT|INT|UINT) of every numeric option in `prunesfm COMMAND --help_all`."""
+    text = subprocess.run([prunesfm, command, "--help_all"], capture_output=True, text=True).stdout
     found = []
     for match in re.finditer(r"^\s+(?:-\w,)?(--[\w,-]+)\s+(FLOAT|INT|UINT)\b", text, re.M):
         option = match.group(1).split(",")[0]

@@ -130,7 +130,7 @@ def prunesfm_capabilities(prunesfm):
     has_run = re.search(r"^\s+run\s", help_text, re.MULTILINE) is not None
     run_help = ""
     if has_run:
-        run_help = subprocess.run([str(prunesfm), "run", "--help"], capture_output=True, text=True).stdout
+        run_help = subprocess.run([str(prunesfm), "run", "--help_all"], capture_output=True, text=True).stdout
     refine = sorted(set(re.findall(r"--(?:refine_[a-z_]+|[a-z_]*focal[a-z_]*)", run_help)))
     return {"run": has_run, "num_threads": "--num_threads" in run_help, "intrinsics_options": refine}
 

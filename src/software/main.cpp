@@ -11,6 +11,7 @@
 #include "software/cli_checks.hpp"
 #include "software/cli_support.hpp"
 #include "software/commands.hpp"
+#include "software/help_format.hpp"
 
 int main(int argc, char** argv) {
   prunesfm::SilenceSolverLogging();
@@ -19,9 +20,10 @@ int main(int argc, char** argv) {
   CLI::App app{
       "PruneSfM: global structure-from-motion that survives repeated and symmetric structure.\n"
       "Engines: " + engines + " (GLOBAL_PRUNED removes spurious view-graph edges first).\n"
-      "Run 'prunesfm <subcommand> --help' for the options of each step.",
+      "Run 'prunesfm <subcommand> --help' for the options of each step (--help_all: every option).",
       "prunesfm"};
   app.require_subcommand(1);
+  prunesfm::UseCompactHelp(&app);
   // A malformed command line gets the same one-line error as a bad file, and where to look.
   app.failure_message([](const CLI::App* parsed, const CLI::Error& error) {
     std::string help = "prunesfm --help";

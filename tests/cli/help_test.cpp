@@ -21,6 +21,26 @@ TEST(Cli, HelpListsSubcommandsAndEngines) {
   EXPECT_NE(result.out.find("GLOBAL_PRUNED"), std::string::npos);
 }
 
+TEST(Cli, RunHelpFitsTwoScreensAndHelpAllListsEveryOption) {
+  // --help keeps what most runs set, the presets included; the expert options collapse into one
+  // line that --help_all expands.
+  const CommandResult help = RunPrunesfm({"run", "--help"});
+  EXPECT_EQ(help.exit_code, 0);
+  EXPECT_LE(std::count(help.out.begin(), help.out.end(), '\n'), 100) << help.out;
+  for (const char* shown : {"--engine", "--prune_preset", "--refine_intrinsics", "--database", "--num_threads"}) {
+    EXPECT_NE(help.out.find(shown), std::string::npos) << shown;
+  }
+  EXPECT_EQ(help.out.find("--prune_landmark_check_deg"), std::string::npos);
+  EXPECT_NE(help.out.find("expert options are not shown: --help_all lists them"), std::string::npos) << help.out;
+
+  const CommandResult all = RunPrunesfm({"run", "--help_all"});
+  EXPECT_EQ(all.exit_code, 0);
+  for (const char* expert : {"--prune_landmark_check_deg", "--flann_checks", "--refine_distortion", "--solver_threads"}) {
+    EXPECT_NE(all.out.find(expert), std::string::npos) << expert;
+  }
+  EXPECT_EQ(all.out.find("expert options are not shown"), std::string::npos);
+}
+
 TEST(Cli, NoSubcommandIsAnError) {
   const CommandResult result = RunPrunesfm({});
   EXPECT_NE(result.exit_code, 0);
@@ -46,7 +66,7 @@ TEST(Cli, PositioningTracksWithTranslationAveragingIsRefused) {
 TEST(Cli, PruneOffersTheModelAuditButNotHowTheFinalSolveStarts) {
   // `prune` runs GLOBAL_PRUNED's pruning, the audit included; it stops there, so how the final
   // solve starts from the audited model would be silently ignored.
-  const CommandResult prune_help = RunPrunesfm({"prune", "--help"});
+  const CommandResult prune_help = RunPrunesfm({"prune", "--help_all"});
   EXPECT_EQ(prune_help.exit_code, 0);
   EXPECT_NE(prune_help.out.find("--prune_model_audit"), std::string::npos);
   EXPECT_NE(prune_help.out.find("--prune_landmark_check_deg"), std::string::npos);
@@ -54,7 +74,7 @@ TEST(Cli, PruneOffersTheModelAuditButNotHowTheFinalSolveStarts) {
                                            "--prune_audit_refine_final", "true"});
   EXPECT_NE(prune.exit_code, 0);
   EXPECT_NE(prune.err.find("--prune_audit_refine_final"), std::string::npos) << prune.err;
-  const CommandResult run = RunPrunesfm({"run", "--help"});
+  const CommandResult run = RunPrunesfm({"run", "--help_all"});
   EXPECT_EQ(run.exit_code, 0);
   EXPECT_NE(run.out.find("--prune_model_audit"), std::string::npos);
   EXPECT_NE(run.out.find("--prune_audit_refine_final"), std::string::npos);

@@ -19,6 +19,7 @@
 #include "sfm_pruning/util/error.hpp"
 #include "software/cli_checks.hpp"
 #include "software/cli_support.hpp"
+#include "software/help_format.hpp"
 
 namespace prunesfm {
 namespace fs = std::filesystem;
@@ -68,18 +69,21 @@ void AddInitOptions(CLI::App* cmd, InitSettings* settings) {
       ->check(CLI::ExistingFile);
   cmd->add_option("--sensor_width", settings->sensor_width_mm,
                   "Sensor width in mm, used with the EXIF focal in mm before the 35 mm equivalent")
-      ->check(PositiveValue());
+      ->check(PositiveValue())
+      ->group(kExpertOptionsGroup);
   cmd->add_option("--default_focal_factor", settings->default_focal_factor,
                   "Without --focal, K or EXIF: focal = this x max(width, height), marked as a guess")
       ->check(PositiveValue())
-      ->capture_default_str();
+      ->capture_default_str()
+      ->group(kExpertOptionsGroup);
   cmd->add_option("--camera_model", settings->camera_model, "Intrinsic model (distortion starts at zero)")
       ->check(CLI::IsMember({"pinhole", "pinhole_radial_k1", "pinhole_radial_k3", "pinhole_brown_t2"}))
       ->capture_default_str();
   cmd->add_option("--grouping", settings->grouping,
                   "camera: one intrinsic per camera body, image size and focal; image: one per image")
       ->check(CLI::IsMember({"camera", "image"}))
-      ->capture_default_str();
+      ->capture_default_str()
+      ->group(kExpertOptionsGroup);
 }
 
 void AddFeatureOptions(CLI::App* cmd, FeatureSettings* settings) {
@@ -90,7 +94,8 @@ void AddFeatureOptions(CLI::App* cmd, FeatureSettings* settings) {
                   "Images are downscaled so that max(width, height) <= this for extraction")
       ->check(PositiveValue())
       ->capture_default_str();
-  cmd->add_flag("--no_root_sift", settings->no_root_sift, "Plain SIFT descriptors instead of RootSIFT");
+  cmd->add_flag("--no_root_sift", settings->no_root_sift, "Plain SIFT descriptors instead of RootSIFT")
+      ->group(kExpertOptionsGroup);
 }
 
 void AddVerificationOptions(CLI::App* cmd, double* max_epipolar_error_deg, double* precision_ratio) {
@@ -101,7 +106,8 @@ void AddVerificationOptions(CLI::App* cmd, double* max_epipolar_error_deg, doubl
                   "baseline (docs/global.md)")
       ->check(PositiveValue())
       ->check(RangeValue(0.0, 90.0))
-      ->capture_default_str();
+      ->capture_default_str()
+      ->group(kExpertOptionsGroup);
   cmd->add_option("--verification_precision_ratio", *precision_ratio,
                   "0 = off. With r in (0, 1), each pair's pose is also estimated at r times the threshold, and the "
                   "model that fits the matches more tightly is kept (its inliers still selected at the full "
@@ -109,7 +115,8 @@ void AddVerificationOptions(CLI::App* cmd, double* max_epipolar_error_deg, doubl
                   "prefer a wrong pose that fits the true matches and the repeats together. Doubles the "
                   "verification's RANSAC (docs/global.md)")
       ->check(RangeValue(0.0, 0.99))
-      ->capture_default_str();
+      ->capture_default_str()
+      ->group(kExpertOptionsGroup);
 }
 
 void AddMatchOptions(CLI::App* cmd, MatchSettings* settings, bool standalone) {
@@ -126,14 +133,18 @@ void AddMatchOptions(CLI::App* cmd, MatchSettings* settings, bool standalone) {
                   "FLANN kd-trees (approximate), exact BRUTE_FORCE, or AUTO: per pair the cheaper of the two "
                   "(brute force up to ~10000 features per image)")
       ->check(CLI::IsMember({"AUTO", "FLANN", "BRUTE_FORCE"}))
-      ->capture_default_str();
+      ->capture_default_str()
+      ->group(kExpertOptionsGroup);
   cmd->add_option("--ratio", settings->ratio, "Lowe's ratio test on descriptor distances")
       ->check(RangeValue(0.1, 1.0))
-      ->capture_default_str();
-  cmd->add_flag("--no_mutual", settings->no_mutual, "Keep one-directional matches (no mutual check)");
+      ->capture_default_str()
+      ->group(kExpertOptionsGroup);
+  cmd->add_flag("--no_mutual", settings->no_mutual, "Keep one-directional matches (no mutual check)")
+      ->group(kExpertOptionsGroup);
   cmd->add_option("--flann_checks", settings->flann_checks, "FLANN: leaves visited per query")
       ->check(PositiveValue())
-      ->capture_default_str();
+      ->capture_default_str()
+      ->group(kExpertOptionsGroup);
   if (standalone) {
     cmd->add_option("--seed", settings->seed, "Seed of the kd-trees and of the verification's RANSAC")
         ->check(SeedValue())

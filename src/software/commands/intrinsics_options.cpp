@@ -2,6 +2,8 @@
 
 #include <CLI/CLI.hpp>
 
+#include "software/help_format.hpp"
+
 namespace prunesfm {
 
 void AddIntrinsicsOptions(CLI::App* cmd, IntrinsicsSettings* settings) {
@@ -33,6 +35,11 @@ void AddIntrinsicsOptions(CLI::App* cmd, IntrinsicsSettings* settings) {
       ->add_option("--refine_principal_point", settings->principal_point,
                    "For those cameras: refine the principal point in bundle adjustment")
       ->capture_default_str();
+  // Which cameras to calibrate is the common choice; what to refine of them is for --help_all.
+  for (CLI::Option* option : group->get_options()) {
+    const bool help_flag = option == group->get_help_ptr() || option == group->get_help_all_ptr();
+    if (!help_flag && option->get_name() != "--refine_intrinsics") MarkExpert(option);
+  }
 }
 
 sfm_pruning::IntrinsicsRefinementOptions ToIntrinsicsOptions(const IntrinsicsSettings& settings) {

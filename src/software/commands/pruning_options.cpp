@@ -6,6 +6,7 @@
 #include <string>
 
 #include "software/cli_checks.hpp"
+#include "software/help_format.hpp"
 
 namespace prunesfm {
 
@@ -257,6 +258,12 @@ void AddPruningOptions(CLI::App* cmd, sfm_pruning::ViewGraphPruningOptions* opti
                     "Longest cycle of subgraphs the second loop pass judges (below 4: off); on a broken "
                     "cycle the least trusted pair is cut")
       ->capture_default_str();
+  // The preset is the one choice most runs make; every other pruning flag studies or adjusts the
+  // method, and `--help` lists them only under --help_all.
+  for (CLI::Option* option : group->get_options()) {
+    const bool help_flag = option == group->get_help_ptr() || option == group->get_help_all_ptr();
+    if (!help_flag && option->get_name() != "--prune_preset") MarkExpert(option);
+  }
 }
 
 }  // namespace prunesfm

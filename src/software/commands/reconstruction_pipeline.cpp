@@ -25,6 +25,7 @@
 #include "software/commands/front_end_stages.hpp"
 #include "software/commands/pruning_options.hpp"
 #include "software/commands/pruning_report_json.hpp"
+#include "software/help_format.hpp"
 
 namespace prunesfm {
 namespace {
@@ -181,7 +182,8 @@ void AddEngineOptions(CLI::App* cmd, EngineSettings* settings) {
                   "project's verification instead of taking COLMAP's inliers (its 4 px threshold keeps matches "
                   "between copies of a repeated structure inside true pairs); false, the default: COLMAP's "
                   "inliers, each pair's pose re-estimated from them")
-      ->capture_default_str();
+      ->capture_default_str()
+      ->group(kExpertOptionsGroup);
   AddSolverOptions(cmd, settings);
   AddIntrinsicsOptions(cmd, &settings->intrinsics);
   AddPruningOptions(cmd, &settings->pruning, true);
@@ -229,28 +231,33 @@ void AddSolverOptions(CLI::App* cmd, EngineSettings* settings) {
                   "bitwise reproducible whatever --num_threads is; more are faster on large scenes, but Ceres's "
                   "threaded sums then change the last digits from run to run")
       ->check(PositiveValue())
-      ->capture_default_str();
+      ->capture_default_str()
+      ->group(kExpertOptionsGroup);
   cmd->add_option("--positioning", settings->positioning,
                   "GLOMAP: global positioning of cameras and points; TRANSLATION_AVERAGING: from edge directions")
       ->check(CLI::IsMember({"GLOMAP", "TRANSLATION_AVERAGING"}))
-      ->capture_default_str();
+      ->capture_default_str()
+      ->group(kExpertOptionsGroup);
   cmd->add_option("--positioning_tracks", settings->positioning_tracks,
                   "Tracks of the global positioning solve (--positioning GLOMAP only): CONNECTED (union-find "
                   "tracks, GLOMAP) or MATCH_STARS (each feature with its direct matches: a wrong match between "
                   "copies of a repeated texture misplaces one observation instead of merging two tracks; "
                   "docs/global.md)")
       ->check(CLI::IsMember({"CONNECTED", "MATCH_STARS"}))
-      ->capture_default_str();
+      ->capture_default_str()
+      ->group(kExpertOptionsGroup);
   cmd->add_option("--positioning_random_starts", settings->positioning_random_starts,
                   "Random starts of the positioning solve (GLOBAL_PRUNED: of its solve of the pruned graph); the "
                   "solution that agrees with the most observation rays is kept (1: a single start, as GLOMAP)")
       ->check(RangeValue(1, 1000))
-      ->capture_default_str();
+      ->capture_default_str()
+      ->group(kExpertOptionsGroup);
   cmd->add_option("--positioning_start_screening", settings->positioning_start_screening,
                   "With several random starts: solve each for this many iterations only, keep the one that "
                   "agrees with the most rays, and solve only that one to the end (0: every start to the end)")
       ->check(NonNegativeValue())
-      ->capture_default_str();
+      ->capture_default_str()
+      ->group(kExpertOptionsGroup);
   AddVerificationOptions(cmd, &settings->max_epipolar_error_deg, &settings->verification_precision_ratio);
   // Translation averaging builds its tracks after the solve, from the solved cameras: the option
   // would be ignored, so the combination is refused rather than run as if it had been honoured.

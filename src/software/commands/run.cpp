@@ -17,6 +17,7 @@
 #include "software/commands/front_end_stages.hpp"
 #include "software/commands/reconstruction_pipeline.hpp"
 #include "software/commands/run_manifest.hpp"
+#include "software/help_format.hpp"
 
 namespace prunesfm {
 namespace {
@@ -182,7 +183,8 @@ void AddRunCommand(CLI::App& app) {
   cmd->add_flag("--force", args->force, "Rerun every stage, ignoring OUT/run_manifest.json");
   cmd->add_flag("--no_colmap_database", args->no_colmap_database,
                 "From images: do not write OUT/database.db (the features and matches for colmap mapper, glomap "
-                "mapper or prunesfm prune; it repeats the descriptors of OUT/matches)");
+                "mapper or prunesfm prune; it repeats the descriptors of OUT/matches)")
+      ->group(kExpertOptionsGroup);
   AddOverwriteFlag(cmd, &args->overwrite, OverwriteMeans::kWriteInto);
   AddEngineOptions(cmd, &args->engine);
   AddInitOptions(cmd, &args->init);
