@@ -2,39 +2,29 @@
 // one line naming the field.
 #include <gtest/gtest.h>
 
-#include <functional>
 #include <limits>
 #include <stdexcept>
-#include <string>
 
 #include "sfm_pruning/pruning/view_graph_pruning.hpp"
+#include "support/option_checks.hpp"
 
 namespace sfm_pruning {
 namespace {
 
-// The message of the std::invalid_argument that `options.Check()` throws after `spoil` ("" when none).
-std::string CheckMessage(const std::function<void(ViewGraphPruningOptions*)>& spoil) {
-  ViewGraphPruningOptions options;
-  spoil(&options);
-  try {
-    options.Check();
-  } catch (const std::invalid_argument& e) {
-    return e.what();
-  }
-  return "";
-}
+using testing::CheckMessage;
+using testing::ExpectEachCaseNamesItsField;
 
 TEST(PruningOptions, DefaultsPass) { EXPECT_NO_THROW(ViewGraphPruningOptions().Check()); }
 
 TEST(PruningOptions, EachStructNamesItsBadField) {
   const double nan = std::numeric_limits<double>::quiet_NaN();
-  const std::vector<std::pair<std::function<void(ViewGraphPruningOptions*)>, std::string>> cases = {
+  ExpectEachCaseNamesItsField<ViewGraphPruningOptions>({
       {[](ViewGraphPruningOptions* o) { o->max_sample_size = 1; }, "ViewGraphPruningOptions::max_sample_size"},
       {[](ViewGraphPruningOptions* o) { o->trust_prior_edges = -1.0; }, "ViewGraphPruningOptions::trust_prior_edges"},
       {[](ViewGraphPruningOptions* o) { o->num_threads = 0; }, "ViewGraphPruningOptions::num_threads"},
       {[](ViewGraphPruningOptions* o) { o->partition.max_depth = -1; }, "RecursivePartitionOptions::max_depth"},
       {[&](ViewGraphPruningOptions* o) { o->partition.louvain.resolution = nan; },
-       "RecursivePartitionOptions::louvain.resolution"},
+       "LouvainOptions::resolution"},
       {[](ViewGraphPruningOptions* o) { o->partition.consistency.max_relative_rotation_error_deg = 0.0; },
        "ConsistencyTestOptions::max_relative_rotation_error_deg"},
       {[](ViewGraphPruningOptions* o) { o->partition.consistency.max_baseline_ratio_factor = 0.5; },
@@ -53,14 +43,9 @@ TEST(PruningOptions, EachStructNamesItsBadField) {
        "ModelEdgeAuditOptions::readmit_agreement"},
       {[](ViewGraphPruningOptions* o) { o->landmark_check.max_angle_deg = -5.0; },
        "LandmarkMatchCheckOptions::max_angle_deg"},
-  };
-  for (const auto& [spoil, field] : cases) {
-    const std::string message = CheckMessage(spoil);
-    EXPECT_EQ(message.rfind(field, 0), 0u) << "expected a message starting with " << field << ", got '" << message << "'";
-    EXPECT_EQ(message.find('\n'), std::string::npos) << message;
-  }
+  });
   // Off values are not out of range.
-  EXPECT_EQ(CheckMessage([](ViewGraphPruningOptions* o) {
+  EXPECT_EQ(CheckMessage<ViewGraphPruningOptions>([](ViewGraphPruningOptions* o) {
               o->max_sample_size = 0;
               o->partition.consistency.max_baseline_ratio_factor = 0.0;
               o->landmark_check.max_angle_deg = 0.0;
@@ -73,6 +58,34 @@ TEST(PruningOptions, PruneViewGraphRefusesBadOptionsBeforeAnyWork) {
   options.alignment.num_iterations = 0;
   ViewGraph graph;
   EXPECT_THROW(PruneViewGraph(options, &graph, SfmData(), FeaturesPerView(), nullptr), std::invalid_argument);
+}
+
+// GLOBAL_PRUNED's options check the pruning's and the final solve's.
+TEST(PruningOptions, PrunedGlobalEngineOptionsCheckThePruningAndTheFinalSolve) {
+  EXPECT_NO_THROW(PrunedGlobalEngineOptions().Check());
+  PrunedGlobalEngineOptions seeded;
+  seeded.SetSeedAndThreads(7, 4, 2);
+  EXPECT_NO_THROW(seeded.Check());
+  ExpectEachCaseNamesItsField<PrunedGlobalEngineOptions>({
+      {[](PrunedGlobalEngineOptions* o) { o->pruning.num_threads = 0; }, "ViewGraphPruningOptions::num_threads"},
+      {[](PrunedGlobalEngineOptions* o) { o->pruning.audit.keep_agreement = 1.5; },
+       "ModelEdgeAuditOptions::keep_agreement"},
+      {[](PrunedGlobalEngineOptions* o) { o->engine.num_threads = 0; }, "GlobalEngineOptions::num_threads"},
+      {[](PrunedGlobalEngineOptions* o) { o->engine.bundle.function_tolerance = -1.0; },
+       "BundleAdjustmentOptions::function_tolerance"},
+  });
+}
+
+TEST(PruningOptions, PruneAndAuditRefusesBadOptionsBeforeAnyWork) {
+  PrunedGlobalEngineOptions options;
+  options.engine.num_bundle_rounds = -1;
+  ViewGraph pruned;
+  SfmData model;
+  PrunedGlobalEngineReport report;
+  EXPECT_THROW(PruneAndAudit(options, ViewGraph(), SfmData(), FeaturesPerView(), &pruned, &model, &report),
+               std::invalid_argument);
+  EXPECT_THROW(RunPrunedGlobalEngine(options, ViewGraph(), SfmData(), FeaturesPerView(), &model, &report),
+               std::invalid_argument);
 }
 
 }  // namespace

@@ -6,6 +6,7 @@
 #include "sfm_pruning/eval/relative_pose_error.hpp"
 #include "sfm_pruning/util/statistics.hpp"
 #include "sfm_pruning/util/error.hpp"
+#include "sfm_pruning/util/option_checks.hpp"
 
 namespace sfm_pruning {
 namespace {
@@ -43,6 +44,7 @@ std::optional<AlignmentErrors> AlignAndMeasure(const std::vector<MatchedCamera>&
 }  // namespace
 
 EvaluationReport EvaluateMatchedCameras(const CameraMatching& matching, const EvaluationOptions& options) {
+  options.Check();
   EvaluationReport report;
   report.num_ground_truth_images = matching.cameras.size();
   report.num_registered_images = matching.NumRegistered();
@@ -61,6 +63,7 @@ EvaluationReport EvaluateMatchedCameras(const CameraMatching& matching, const Ev
 
 EvaluationReport EvaluateModel(const SfmData& estimate, const SfmData& ground_truth, const EvaluationOptions& options,
                                const std::string& estimate_source, const std::string& ground_truth_source) {
+  options.Check();  // before the cameras are matched
   const CameraMatching matching = MatchCamerasByName(estimate, ground_truth, estimate_source, ground_truth_source);
   if (matching.cameras.size() < 2) {
     throw FileError(ground_truth_source, "fewer than 2 posed images (" + std::to_string(matching.cameras.size()) +
@@ -73,6 +76,17 @@ EvaluationReport EvaluateModel(const SfmData& estimate, const SfmData& ground_tr
                                          std::to_string(matching.cameras.size()) + ")");
   }
   return EvaluateMatchedCameras(matching, options);
+}
+
+void EvaluationOptions::Check() const {
+  // What AucPercent (pose_auc.hpp) integrates up to; an empty list reports no AUC.
+  for (size_t k = 0; k < auc_thresholds_deg.size(); ++k) {
+    if (!(auc_thresholds_deg[k] > 0.0 && std::isfinite(auc_thresholds_deg[k]))) {
+      option_checks_detail::Fail("EvaluationOptions::auc_thresholds_deg[" + std::to_string(k) + "]",
+                                 "positive and finite", auc_thresholds_deg[k]);
+    }
+  }
+  alignment.Check();
 }
 
 }  // namespace sfm_pruning

@@ -20,6 +20,9 @@ namespace sfm_pruning {
 struct EvaluationOptions {
   std::vector<double> auc_thresholds_deg = {3.0, 5.0, 10.0};
   RobustSimilarityOptions alignment;  // carries the seed of the alignment's RANSAC
+
+  // Throws std::invalid_argument naming the first field out of range (util/option_checks.hpp).
+  void Check() const;
 };
 
 struct AucAtThreshold {

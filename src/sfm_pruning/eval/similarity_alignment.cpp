@@ -8,6 +8,7 @@
 #include <Eigen/Eigenvalues>
 #include <Eigen/Geometry>
 
+#include "sfm_pruning/util/option_checks.hpp"
 #include "sfm_pruning/util/statistics.hpp"
 
 namespace sfm_pruning {
@@ -100,6 +101,7 @@ std::optional<Similarity3> FitSimilarityLeastSquares(const std::vector<Eigen::Ve
 std::optional<RobustSimilarity> FitSimilarityRobust(const std::vector<Eigen::Vector3d>& source,
                                                     const std::vector<Eigen::Vector3d>& target,
                                                     const RobustSimilarityOptions& options) {
+  options.Check();
   if (source.size() != target.size() || source.size() < kMinimalSample) return std::nullopt;
   const double threshold = options.inlier_threshold_scene_fraction * SceneRadius(target);
   if (!(threshold > 0.0)) return std::nullopt;
@@ -138,6 +140,16 @@ std::optional<RobustSimilarity> FitSimilarityRobust(const std::vector<Eigen::Vec
   result.num_inliers = inliers.size();
   result.inlier_threshold = threshold;
   return result;
+}
+
+void RobustSimilarityOptions::Check() const {
+  // A threshold of 0 admits no inlier; an infinite one makes every point one.
+  if (!(inlier_threshold_scene_fraction > 0.0 && std::isfinite(inlier_threshold_scene_fraction))) {
+    option_checks_detail::Fail("RobustSimilarityOptions::inlier_threshold_scene_fraction",
+                               "positive and finite", inlier_threshold_scene_fraction);
+  }
+  // Without a sample there is no fit.
+  RequireAtLeast(max_iterations, 1, "RobustSimilarityOptions::max_iterations");
 }
 
 }  // namespace sfm_pruning

@@ -28,6 +28,9 @@ struct RobustSimilarityOptions {
   double inlier_threshold_scene_fraction = 0.1;
   int max_iterations = 1000;  // random minimal samples of 3 points
   uint64_t seed = 0;
+
+  // Throws std::invalid_argument naming the first field out of range (util/option_checks.hpp).
+  void Check() const;
 };
 
 struct RobustSimilarity {

@@ -4,6 +4,7 @@
 #include <cmath>
 #include <cstdio>
 #include <functional>
+#include <stdexcept>
 #include <thread>
 #include <utility>
 
@@ -14,6 +15,7 @@
 #include "sfm_pruning/eval/synthetic_pairs.hpp"
 #include "sfm_pruning/eval/synthetic_random.hpp"
 #include "sfm_pruning/util/error.hpp"
+#include "sfm_pruning/util/option_checks.hpp"
 
 namespace sfm_pruning {
 namespace {
@@ -200,6 +202,12 @@ std::vector<std::string> SyntheticSceneNames() {
 }
 
 SyntheticScene GenerateSyntheticScene(const SyntheticSceneOptions& options, const ProgressCallback& progress) {
+  // An option out of range is the Error this function documents, as for the resolved values.
+  try {
+    options.Check();
+  } catch (const std::invalid_argument& e) {
+    throw Error(std::string("synthetic scene: ") + e.what());
+  }
   SyntheticScene scene;
   scene.options = ResolveDefaults(options, &scene.description);
   scene.name = scene.options.scene;
@@ -226,6 +234,67 @@ SyntheticScene GenerateSyntheticScene(const SyntheticSceneOptions& options, cons
 
   MatchAllPairs(SelectPairs(scene, layout), &scene, progress);
   return scene;
+}
+
+void SyntheticSceneOptions::Check() const {
+  const std::vector<std::string> names = SyntheticSceneNames();
+  if (std::find(names.begin(), names.end(), scene) == names.end()) {
+    std::string list;
+    for (const std::string& name : names) list += (list.empty() ? "" : ", ") + name;
+    option_checks_detail::Fail("SyntheticSceneOptions::scene", "one of " + list, "'" + scene + "'");
+  }
+  // The bounds are those GenerateSyntheticScene applies to the resolved values (kSyntheticLimits);
+  // 0 (twin_fraction: negative) takes the scene's default where the header says so. A family scene
+  // replaces the capture conditions (noise, dropout, clutter, outliers) with its draws, but a value
+  // out of range means nothing there either.
+  const SyntheticLimits& limits = kSyntheticLimits;
+  if (num_views != 0) {
+    RequireInRange(num_views, 2, limits.max_views, "SyntheticSceneOptions::num_views (or 0: scene default)");
+  }
+  RequireInRange(image_width, 0u, limits.max_image_side_px, "SyntheticSceneOptions::image_width");
+  RequireInRange(image_height, 0u, limits.max_image_side_px, "SyntheticSceneOptions::image_height");
+  if (focal_px != 0.0) {
+    RequirePositiveAtMost(focal_px, limits.max_focal_image_sides * limits.max_image_side_px,
+                          "SyntheticSceneOptions::focal_px (or 0: scene default)");
+  }
+  RequireInRange(noise_px, 0.0, limits.max_noise_px, "SyntheticSceneOptions::noise_px");
+  RequireInRange(descriptor_noise, 0.0, limits.max_descriptor_noise,
+                 "SyntheticSceneOptions::descriptor_noise");
+  // Dropping every point would leave nothing to detect.
+  if (!(dropout >= 0.0 && dropout < 1.0)) {
+    option_checks_detail::Fail("SyntheticSceneOptions::dropout", "in [0, 1)", dropout);
+  }
+  RequireInRange(clutter_ratio, 0.0, limits.max_clutter_ratio, "SyntheticSceneOptions::clutter_ratio");
+  // 90 or more turns the facing test off; 0 would detect nothing.
+  RequirePositiveAtMost(max_incidence_deg, 180.0, "SyntheticSceneOptions::max_incidence_deg");
+  if (max_distance_m != 0.0 && !(max_distance_m > 0.0 && std::isfinite(max_distance_m))) {
+    option_checks_detail::Fail("SyntheticSceneOptions::max_distance_m (or 0: scene default)",
+                               "positive and finite", max_distance_m);
+  }
+  RequirePositiveAtMost(point_density_scale, limits.max_point_density_scale,
+                        "SyntheticSceneOptions::point_density_scale");
+  RequirePositiveAtMost(ratio_test, 1.0, "SyntheticSceneOptions::ratio_test");
+  // Only wrong matches would have to be injected among no true one.
+  if (!(outlier_ratio >= 0.0 && outlier_ratio < 1.0)) {
+    option_checks_detail::Fail("SyntheticSceneOptions::outlier_ratio", "in [0, 1)", outlier_ratio);
+  }
+  RequireAtLeast(min_matches, 0, "SyntheticSceneOptions::min_matches");
+  RequireAtLeast(sequential_window, 0, "SyntheticSceneOptions::sequential_window (0: scene default)");
+  RequireAtLeast(loop_candidates, 0, "SyntheticSceneOptions::loop_candidates (0: scene default)");
+  RequireAtLeast(loop_min_gap, 0, "SyntheticSceneOptions::loop_min_gap (0: scene default)");
+  RequireAtLeast(laps, 0, "SyntheticSceneOptions::laps (0: scene default)");
+  if (!(twin_fraction < 0.0)) {
+    RequireInRange(twin_fraction, 0.0, 0.9,
+                   "SyntheticSceneOptions::twin_fraction (or negative: scene default)");
+  }
+  if (loop_straight_per_radius != 0.0) {
+    RequirePositiveAtMost(loop_straight_per_radius, 100.0,
+                          "SyntheticSceneOptions::loop_straight_per_radius (or 0: scene default)");
+  }
+  // The shop sign on each facade module is 2 m wide.
+  RequireInRange(street_module_width_m, 2.0, limits.max_street_module_width_m,
+                 "SyntheticSceneOptions::street_module_width_m");
+  RequireAtLeast(num_threads, 0, "SyntheticSceneOptions::num_threads (0: one)");
 }
 
 }  // namespace sfm_pruning

@@ -93,6 +93,11 @@ struct SyntheticSceneOptions {
 
   // Worker threads for matching; the output does not depend on it.
   int num_threads = 1;
+
+  // Throws std::invalid_argument naming the first field out of range (util/option_checks.hpp).
+  // Checks the values as given; GenerateSyntheticScene also checks them once the scene's
+  // defaults (and a family's draws) are resolved, e.g. num_views against laps.
+  void Check() const;
 };
 
 // What a family scene drew from its seed (synthetic_families.hpp): named numbers and labels.

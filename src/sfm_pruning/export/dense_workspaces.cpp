@@ -8,6 +8,7 @@
 #include "sfm_pruning/io/openmvs_conversion.hpp"
 #include "sfm_pruning/util/atomic_file.hpp"
 #include "sfm_pruning/util/error.hpp"
+#include "sfm_pruning/util/option_checks.hpp"
 
 namespace sfm_pruning {
 namespace fs = std::filesystem;
@@ -67,6 +68,7 @@ void LinkModelIntoSubfolderZero(const fs::path& sparse) {
 void WriteColmapUndistortedWorkspace(const SfmData& data, const fs::path& image_root,
                                      const fs::path& output_dir, const DenseWorkspaceOptions& options,
                                      const ProgressCallback& progress) {
+  options.Check();
   const UndistortedModel undistorted = UndistortModel(data, options.undistort);
   WriteDirectoryAtomically(output_dir, OutputFolderKind::kColmapDenseWorkspace, [&](const fs::path& dir) {
     WriteUndistortedImages(data, undistorted, image_root, dir / "images", options.images, progress);
@@ -79,12 +81,20 @@ void WriteColmapUndistortedWorkspace(const SfmData& data, const fs::path& image_
 
 void WriteOpenMvsWorkspace(const SfmData& data, const fs::path& image_root, const fs::path& output_dir,
                            const DenseWorkspaceOptions& options, const ProgressCallback& progress) {
+  options.Check();
   const UndistortedModel undistorted = UndistortModel(data, options.undistort);
   const OpenMvsScene scene = OpenMvsSceneFromSfmData(undistorted.data, "images", options.openmvs_version);
   WriteDirectoryAtomically(output_dir, OutputFolderKind::kOpenMvsWorkspace, [&](const fs::path& dir) {
     WriteUndistortedImages(data, undistorted, image_root, dir / "images", options.images, progress);
     WriteOpenMvsScene(scene, dir / "scene.mvs");
   });
+}
+
+void DenseWorkspaceOptions::Check() const {
+  undistort.Check();
+  images.Check();
+  // WriteOpenMvsScene refuses newer versions, but only after every image is undistorted.
+  RequireInRange(openmvs_version, 0u, kOpenMvsNewestVersion, "DenseWorkspaceOptions::openmvs_version");
 }
 
 }  // namespace sfm_pruning

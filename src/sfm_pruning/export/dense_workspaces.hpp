@@ -17,6 +17,9 @@ struct DenseWorkspaceOptions {
   UndistortOptions undistort;
   ImageWriteOptions images;
   uint32_t openmvs_version = kOpenMvsExportVersion;
+
+  // Throws std::invalid_argument naming the first field out of range (util/option_checks.hpp).
+  void Check() const;
 };
 
 // COLMAP's undistorted workspace, what `colmap image_undistorter` writes and what COLMAP's dense

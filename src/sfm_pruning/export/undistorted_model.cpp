@@ -8,6 +8,7 @@
 
 #include "sfm_pruning/export/image_files.hpp"
 #include "sfm_pruning/util/error.hpp"
+#include "sfm_pruning/util/option_checks.hpp"
 #include "sfm_pruning/util/parallel_for.hpp"
 
 namespace sfm_pruning {
@@ -79,6 +80,7 @@ void SplitSphericalViews(const SfmData& original, UndistortedModel* model) {
 }  // namespace
 
 UndistortedModel UndistortModel(const SfmData& data, const UndistortOptions& options) {
+  options.Check();
   UndistortedModel model;
   model.data = data;
   for (auto& [id, intrinsics] : model.data.intrinsics)
@@ -112,6 +114,7 @@ void CopyImage(const fs::path& from, const fs::path& to) {
 void WriteUndistortedImages(const SfmData& original, const UndistortedModel& undistorted,
                             const fs::path& image_root, const fs::path& output_dir,
                             const ImageWriteOptions& options, const ProgressCallback& progress) {
+  options.Check();
   const std::vector<IndexT> views = undistorted.data.PosedViewIds();
   // One map per (intrinsic, cube face) that needs resampling, computed before the parallel loop.
   using MapKey = std::pair<IndexT, int>;
@@ -151,6 +154,12 @@ void WriteUndistortedImages(const SfmData& original, const UndistortedModel& und
         WriteImage(to, UndistortImage(image, *map->second), options.jpeg_quality);
       },
       progress, "undistorting images");
+}
+
+void ImageWriteOptions::Check() const {
+  RequireAtLeast(num_threads, 1, "ImageWriteOptions::num_threads");
+  // OpenCV's IMWRITE_JPEG_QUALITY range.
+  RequireInRange(jpeg_quality, 0, 100, "ImageWriteOptions::jpeg_quality");
 }
 
 }  // namespace sfm_pruning

@@ -33,6 +33,9 @@ UndistortedModel UndistortModel(const SfmData& data, const UndistortOptions& opt
 struct ImageWriteOptions {
   int num_threads = 1;
   int jpeg_quality = 95;  // for outputs named *.jpg / *.jpeg
+
+  // Throws std::invalid_argument naming the first field out of range (util/option_checks.hpp).
+  void Check() const;
 };
 
 // Writes the image of every posed view of `undistorted` to output_dir / its relative path, resampled

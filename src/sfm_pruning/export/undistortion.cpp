@@ -3,12 +3,14 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <sstream>
 #include <vector>
 
 #include <Eigen/Geometry>
 #include <opencv2/imgproc.hpp>
 
 #include "sfm_pruning/util/error.hpp"
+#include "sfm_pruning/util/option_checks.hpp"
 
 namespace sfm_pruning {
 namespace {
@@ -102,6 +104,7 @@ int CubeFaceOf(const Eigen::Vector3d& bearing) {
 }
 
 CameraIntrinsics UndistortedIntrinsics(const CameraIntrinsics& camera, const UndistortOptions& options) {
+  options.Check();  // std::clamp below needs min <= max
   if (camera.model() == CameraModel::kSpherical) {
     // 90 degrees over `size` pixels: the face spans [-0.5, size - 0.5], tan(45) = 1 at its edges.
     const uint32_t size = std::max<uint32_t>(1, (std::max(camera.width(), camera.height()) + 2) / 4);
@@ -190,6 +193,19 @@ cv::Mat UndistortImage(const cv::Mat& image, const UndistortionMaps& maps) {
   cv::remap(image, undistorted, maps.map_x, maps.map_y, cv::INTER_LINEAR, cv::BORDER_CONSTANT,
             cv::Scalar::all(0));
   return undistorted;
+}
+
+void UndistortOptions::Check() const {
+  // The focal scale is positive before the clamp: a minimum of 0 or a maximum of infinity
+  // clamps nothing, but an infinite minimum would give an infinite focal.
+  if (!(min_focal_scale >= 0.0 && std::isfinite(min_focal_scale))) {
+    option_checks_detail::Fail("UndistortOptions::min_focal_scale", "at least 0 and finite", min_focal_scale);
+  }
+  if (!(max_focal_scale > 0.0 && max_focal_scale >= min_focal_scale)) {
+    std::ostringstream rule;
+    rule << "positive and at least min_focal_scale (" << min_focal_scale << ")";
+    option_checks_detail::Fail("UndistortOptions::max_focal_scale", rule.str(), max_focal_scale);
+  }
 }
 
 }  // namespace sfm_pruning

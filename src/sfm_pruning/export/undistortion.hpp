@@ -33,6 +33,9 @@ struct UndistortOptions {
   UndistortFit fit = UndistortFit::kNoBlackBorders;
   double min_focal_scale = 0.2;
   double max_focal_scale = 2.0;
+
+  // Throws std::invalid_argument naming the first field out of range (util/option_checks.hpp).
+  void Check() const;
 };
 
 // The pinhole camera (kPinholeFxFy, COLMAP's PINHOLE) that undistorted images of `camera` use.

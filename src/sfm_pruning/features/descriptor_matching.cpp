@@ -9,6 +9,7 @@
 #include <opencv2/flann.hpp>
 
 #include "sfm_pruning/util/blas_product.hpp"
+#include "sfm_pruning/util/option_checks.hpp"
 #include "sfm_pruning/util/parallel_for.hpp"
 
 namespace sfm_pruning {
@@ -125,6 +126,7 @@ bool UseBruteForce(const DescriptorMatchingOptions& options, size_t n_a, size_t 
 
 PairwiseMatches MatchDescriptors(const FeaturesPerView& features, const PairSet& pairs,
                                  const DescriptorMatchingOptions& options, const ProgressCallback& progress) {
+  options.Check();
   std::vector<ViewPair> jobs;
   for (const ViewPair& pair : pairs) {
     const auto a = features.find(pair.first);
@@ -190,6 +192,16 @@ PairwiseMatches MatchDescriptors(const FeaturesPerView& features, const PairSet&
     }
   }
   return matches;
+}
+
+void DescriptorMatchingOptions::Check() const {
+  // The nearest distance over the second nearest is at most 1; a bound of 0 would keep no match.
+  RequirePositiveAtMost(max_ratio, 1.0, "DescriptorMatchingOptions::max_ratio");
+  RequireAtLeast(flann_trees, 1, "DescriptorMatchingOptions::flann_trees");
+  RequireAtLeast(flann_checks, 1, "DescriptorMatchingOptions::flann_checks");
+  // 0 and 1 both keep every pair with a match (a pair without one is never kept).
+  RequireAtLeast(min_num_matches, 0, "DescriptorMatchingOptions::min_num_matches");
+  RequireAtLeast(num_threads, 1, "DescriptorMatchingOptions::num_threads");
 }
 
 }  // namespace sfm_pruning

@@ -34,6 +34,9 @@ struct DescriptorMatchingOptions {
   int min_num_matches = 15;  // pairs with fewer matches are left out (COLMAP's default)
   uint64_t seed = 0;         // the kd-trees' random split choices
   int num_threads = 1;       // pairs matched in parallel; the result does not depend on it
+
+  // Throws std::invalid_argument naming the first field out of range (util/option_checks.hpp).
+  void Check() const;
 };
 
 // Matches every pair of `pairs` whose views have descriptors (others are skipped). Progress

@@ -5,6 +5,8 @@
 #include <cstdint>
 #include <utility>
 
+#include "sfm_pruning/util/option_checks.hpp"
+
 namespace sfm_pruning {
 namespace {
 
@@ -34,6 +36,7 @@ std::optional<FocalSource> FocalSourceFromName(const std::string& name) {
 }
 
 FocalPrior FocalFromExif(const ExifMetadata* exif, uint32_t width, uint32_t height, const FocalPriorOptions& options) {
+  options.Check();
   const double max_side = std::max(width, height);
   // A tag that gives no real lens (0, NaN, 65535 mm) falls through to the next source: the focal
   // must be one that IntrinsicsProblem (sfm/sfm_data.hpp) accepts, else the whole run would stop.
@@ -59,6 +62,16 @@ FocalPrior FocalFromExif(const ExifMetadata* exif, uint32_t width, uint32_t heig
     }
   }
   return {options.default_focal_factor * max_side, FocalSource::kDefaultGuess};
+}
+
+void FocalPriorOptions::Check() const {
+  // 0: no sensor width (the EXIF focal in mm is used through the other sources only). The bound
+  // is 10 m, far past any camera's sensor.
+  if (sensor_width_mm != 0.0) {
+    RequirePositiveAtMost(sensor_width_mm, 1e4, "FocalPriorOptions::sensor_width_mm (or 0: none)");
+  }
+  // A focal over 1000 image sides is one IntrinsicsProblem (sfm/sfm_data.hpp) refuses.
+  RequirePositiveAtMost(default_focal_factor, 1000.0, "FocalPriorOptions::default_focal_factor");
 }
 
 }  // namespace sfm_pruning

@@ -36,6 +36,9 @@ inline constexpr double kDefaultFocalFactor = 1.2;
 struct FocalPriorOptions {
   double sensor_width_mm = 0.0;  // > 0: used with the EXIF focal in mm before anything else
   double default_focal_factor = kDefaultFocalFactor;
+
+  // Throws std::invalid_argument naming the first field out of range (util/option_checks.hpp).
+  void Check() const;
 };
 
 struct FocalPrior {

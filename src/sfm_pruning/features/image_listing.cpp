@@ -4,10 +4,12 @@
 #include <cctype>
 #include <cmath>
 #include <set>
+#include <stdexcept>
 #include <tuple>
 
 #include "sfm_pruning/features/image_decoding.hpp"
 #include "sfm_pruning/util/error.hpp"
+#include "sfm_pruning/util/option_checks.hpp"
 #include "sfm_pruning/util/parallel_for.hpp"
 
 namespace sfm_pruning {
@@ -72,6 +74,7 @@ std::vector<std::string> ListImageFiles(const fs::path& dir) {
 
 ImageListing ListImages(const fs::path& image_dir, const ImageListingOptions& options,
                         const ProgressCallback& progress) {
+  options.Check();
   const std::vector<std::string> files = ListImageFiles(image_dir);
   std::vector<ImageProbe> probes(files.size());
   ParallelFor(
@@ -130,6 +133,24 @@ ImageListing ListImages(const fs::path& image_dir, const ImageListingOptions& op
                                             listing.skipped.front().reason + ")");
   }
   return listing;
+}
+
+void ImageListingOptions::Check() const {
+  if (focal_px && !(*focal_px > 0.0 && std::isfinite(*focal_px))) {
+    option_checks_detail::Fail("ImageListingOptions::focal_px", "positive and finite", *focal_px);
+  }
+  // What ReadKFile (io/k_file.hpp) accepts: the intrinsics take fx, fy, cx and cy from it.
+  if (K) {
+    const Eigen::Matrix3d& k = *K;
+    const bool camera_matrix = k(0, 0) > 0.0 && k(1, 1) > 0.0 && k(1, 0) == 0.0 && k(2, 0) == 0.0 &&
+                               k(2, 1) == 0.0 && k(2, 2) == 1.0 && std::isfinite(k.sum());
+    if (!camera_matrix) {
+      throw std::invalid_argument(
+          "ImageListingOptions::K must be a finite camera matrix [fx s cx; 0 fy cy; 0 0 1] with fx, fy > 0");
+    }
+  }
+  focal.Check();
+  RequireAtLeast(num_threads, 1, "ImageListingOptions::num_threads");
 }
 
 }  // namespace sfm_pruning

@@ -33,6 +33,9 @@ struct ImageListingOptions {
   // is COLMAP's SIMPLE_RADIAL. With a K whose fx != fy the model is kPinholeFxFy.
   CameraModel camera_model = CameraModel::kPinholeRadialK1;
   int num_threads = 1;
+
+  // Throws std::invalid_argument naming the first field out of range (util/option_checks.hpp).
+  void Check() const;
 };
 
 struct SkippedImage {

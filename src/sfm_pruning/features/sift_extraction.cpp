@@ -10,6 +10,7 @@
 #include <opencv2/imgproc.hpp>
 
 #include "sfm_pruning/features/image_decoding.hpp"
+#include "sfm_pruning/util/option_checks.hpp"
 #include "sfm_pruning/util/parallel_for.hpp"
 
 namespace sfm_pruning {
@@ -50,6 +51,7 @@ class ScopedOpenCvThreads {
 }  // namespace
 
 FeatureSet ExtractSift(const cv::Mat& gray, const SiftOptions& options) {
+  options.Check();
   cv::Mat image = gray;
   double scale = 1.0;  // full-image pixels per pixel of `image`
   const int max_side = std::max(gray.cols, gray.rows);
@@ -103,6 +105,7 @@ FeatureSet ExtractSift(const cv::Mat& gray, const SiftOptions& options) {
 
 FeaturesPerView ExtractFeatures(const SfmData& scene, const SiftOptions& options, FeatureExtractionReport* report,
                                 const ProgressCallback& progress) {
+  options.Check();
   std::vector<IndexT> view_ids;
   for (const auto& [view_id, view] : scene.views) view_ids.push_back(view_id);
   std::vector<FeatureSet> results(view_ids.size());
@@ -136,6 +139,20 @@ FeaturesPerView ExtractFeatures(const SfmData& scene, const SiftOptions& options
     features[view_ids[k]] = std::move(results[k]);
   }
   return features;
+}
+
+void SiftOptions::Check() const {
+  // 0 is OpenCV's "no cap" for the feature count and ExtractSift's "no downscaling" for the size.
+  RequireAtLeast(max_features, 0, "SiftOptions::max_features (0: no cap)");
+  RequireAtLeast(max_image_size, 0, "SiftOptions::max_image_size (0: full size)");
+  // 0 keeps every DoG extremum; a negative threshold would too, so it can only be a mistake.
+  RequireAtLeast(contrast_threshold, 0.0, "SiftOptions::contrast_threshold");
+  // The largest ratio of principal curvatures kept; an infinite one fails OpenCV's test (inf < inf).
+  if (!(edge_threshold > 0.0 && std::isfinite(edge_threshold))) {
+    option_checks_detail::Fail("SiftOptions::edge_threshold", "positive and finite", edge_threshold);
+  }
+  RequireAtLeast(num_octave_layers, 1, "SiftOptions::num_octave_layers");
+  RequireAtLeast(num_threads, 1, "SiftOptions::num_threads");
 }
 
 }  // namespace sfm_pruning

@@ -34,6 +34,9 @@ struct SiftOptions {
   double edge_threshold = 10.0;
   int num_octave_layers = 3;
   int num_threads = 1;         // images extracted in parallel
+
+  // Throws std::invalid_argument naming the first field out of range (util/option_checks.hpp).
+  void Check() const;
 };
 
 // One image (8-bit grey). Features are sorted by decreasing response, at most max_features.

@@ -6,6 +6,8 @@
 #include <Eigen/Geometry>
 #include <Eigen/SVD>
 
+#include "sfm_pruning/util/option_checks.hpp"
+
 namespace sfm_pruning {
 namespace {
 
@@ -66,6 +68,7 @@ double SampsonDistance(const Eigen::Matrix3d& F, const Eigen::Vector2d& x_i, con
 
 bool EstimateFundamentalMatrix(const std::vector<Eigen::Vector2d>& points_i, const std::vector<Eigen::Vector2d>& points_j,
                                const FundamentalMatrixOptions& options, Eigen::Matrix3d* F, double* definition) {
+  options.Check();
   if (points_i.size() != points_j.size() || points_i.size() < 8) return false;
   const Eigen::Matrix3d T_i = NormalizingTransform(points_i);
   const Eigen::Matrix3d T_j = NormalizingTransform(points_j);
@@ -96,6 +99,12 @@ bool EstimateFundamentalMatrix(const std::vector<Eigen::Vector2d>& points_i, con
   *F = estimate / estimate.norm();
   if (definition != nullptr) *definition = fit_definition;
   return true;
+}
+
+void FundamentalMatrixOptions::Check() const {
+  // The Cauchy weight divides by robust_scale^2; an infinite scale is the plain Sampson fit.
+  RequirePositiveAtMost(robust_scale, std::numeric_limits<double>::infinity(), "FundamentalMatrixOptions::robust_scale");
+  RequireAtLeast(num_reweighting_iterations, 0, "FundamentalMatrixOptions::num_reweighting_iterations");
 }
 
 }  // namespace sfm_pruning

@@ -18,6 +18,9 @@ struct FundamentalMatrixOptions {
   double robust_scale = 1.0;
   // Reweighting passes after the plain linear fit (0 = the linear fit only).
   int num_reweighting_iterations = 4;
+
+  // Throws std::invalid_argument naming the first field out of range (util/option_checks.hpp).
+  void Check() const;
 };
 
 // First-order geometric (Sampson) distance of a correspondence to F, in the points' units.

@@ -11,6 +11,7 @@
 #include "sfm_pruning/geometry/opengv_boundary.hpp"
 #include "sfm_pruning/geometry/opengv_ransac.hpp"
 #include "sfm_pruning/geometry/triangulation.hpp"
+#include "sfm_pruning/util/option_checks.hpp"
 
 namespace sfm_pruning {
 namespace {
@@ -60,6 +61,7 @@ double AbsolutePoseThresholdRad(const AbsolutePoseOptions& options) {
 AbsolutePoseResult EstimateAbsolutePose(const std::vector<Eigen::Vector3d>& bearings,
                                         const std::vector<Eigen::Vector3d>& points_world,
                                         const AbsolutePoseOptions& options) {
+  options.Check();
   if (bearings.size() != points_world.size()) return FailedResult<AbsolutePoseResult>("bearings and points differ in size");
   const opengv::bearingVectors_t opengv_bearings = ToOpenGVVectors(bearings);
   const opengv::points_t opengv_points = ToOpenGVVectors(points_world);
@@ -105,6 +107,17 @@ AbsolutePoseResult EstimateAbsolutePose(const std::vector<Eigen::Vector3d>& bear
   }
   result.success = true;
   return result;
+}
+
+void AbsolutePoseOptions::Check() const {
+  // The angle between a bearing and the direction to its point is at most 180 degrees.
+  RequirePositiveAtMost(max_angular_error_deg, 180.0, "AbsolutePoseOptions::max_angular_error_deg");
+  // 0 = no pixel threshold / focal length not known: the angular threshold applies.
+  RequireAtLeast(max_reprojection_error_px, 0.0, "AbsolutePoseOptions::max_reprojection_error_px");
+  RequireAtLeast(focal_length_px, 0.0, "AbsolutePoseOptions::focal_length_px");
+  ransac.Check();
+  RequireAtLeast(refinement_rounds, 0, "AbsolutePoseOptions::refinement_rounds");
+  RequireAtLeast(min_num_inliers, 0, "AbsolutePoseOptions::min_num_inliers");
 }
 
 }  // namespace sfm_pruning

@@ -32,6 +32,9 @@ struct AbsolutePoseOptions {
   int refinement_rounds = 2;
   // Below this many inliers the estimate is reported as failed.
   int min_num_inliers = 6;
+
+  // Throws std::invalid_argument naming the first field out of range (util/option_checks.hpp).
+  void Check() const;
 };
 
 // The angular inlier threshold (radians) the options describe.

@@ -15,6 +15,7 @@
 #include "sfm_pruning/geometry/opengv_ransac.hpp"
 #include "sfm_pruning/geometry/relative_pose_refinement.hpp"
 #include "sfm_pruning/geometry/triangulation.hpp"
+#include "sfm_pruning/util/option_checks.hpp"
 
 namespace sfm_pruning {
 namespace {
@@ -202,6 +203,7 @@ RelativePoseResult EstimateAtThreshold(const std::vector<Eigen::Vector3d>& beari
 RelativePoseResult EstimateRelativePose(const std::vector<Eigen::Vector3d>& bearings_i,
                                         const std::vector<Eigen::Vector3d>& bearings_j,
                                         const RelativePoseOptions& options) {
+  options.Check();
   RelativePoseResult loose = EstimateAtThreshold(bearings_i, bearings_j, options);
   const double ratio = options.precision_check_ratio;
   if (!loose.success || !(ratio > 0.0 && ratio < 1.0)) return loose;
@@ -222,6 +224,15 @@ RelativePoseResult EstimateRelativePose(const std::vector<Eigen::Vector3d>& bear
   tight.num_inliers_in_front = set.num_in_front;
   tight.inliers = std::move(set.inliers);
   return tight;
+}
+
+void RelativePoseOptions::Check() const {
+  // The angle between a bearing and an epipolar plane is at most 90 degrees.
+  RequirePositiveAtMost(max_angular_error_deg, 90.0, "RelativePoseOptions::max_angular_error_deg");
+  ransac.Check();
+  RequireAtLeast(refinement_rounds, 0, "RelativePoseOptions::refinement_rounds");
+  // 0 = off; a ratio of 1 would repeat the same estimate, and EstimateRelativePose skips it.
+  RequireInRange(precision_check_ratio, 0.0, 1.0, "RelativePoseOptions::precision_check_ratio");
 }
 
 }  // namespace sfm_pruning

@@ -37,6 +37,9 @@ struct RelativePoseOptions {
   // Drop inliers that triangulate behind either camera. Rays whose parallax is below the
   // inlier threshold are kept: their depth sign is noise (points at infinity).
   bool reject_points_behind = true;
+
+  // Throws std::invalid_argument naming the first field out of range (util/option_checks.hpp).
+  void Check() const;
 };
 
 struct RelativePoseResult {

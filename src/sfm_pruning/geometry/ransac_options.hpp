@@ -12,6 +12,9 @@ struct RansacOptions {
   double confidence = 0.999;
   // Seed of the sampler: same input + same seed = same output, bitwise.
   uint64_t seed = 0;
+
+  // Throws std::invalid_argument naming the first field out of range (util/option_checks.hpp).
+  void Check() const;
 };
 
 }  // namespace sfm_pruning

@@ -1,11 +1,13 @@
 #include "sfm_pruning/geometry/relative_pose_refinement.hpp"
 
+#include <limits>
 #include <memory>
 
 #include <ceres/ceres.h>
 #include <ceres/rotation.h>
 
 #include "sfm_pruning/geometry/so3.hpp"
+#include "sfm_pruning/util/option_checks.hpp"
 
 namespace sfm_pruning {
 namespace {
@@ -42,6 +44,7 @@ RelativePoseRefinementSummary RefineRelativePose(const std::vector<Eigen::Vector
                                                  const std::vector<int>& indices,
                                                  const RelativePoseRefinementOptions& options,
                                                  RelativePose* relative_ij) {
+  options.Check();
   RelativePoseRefinementSummary summary;
   if (indices.size() < 5) return summary;
 
@@ -78,6 +81,16 @@ RelativePoseRefinementSummary RefineRelativePose(const std::vector<Eigen::Vector
   relative_ij->rotation = ProjectToRotation(ExpSO3(Eigen::Vector3d(delta[0], delta[1], delta[2])) * R0);
   relative_ij->translation = translation.normalized();
   return summary;
+}
+
+void RelativePoseRefinementOptions::Check() const {
+  // <= 0 is plain least squares; a Cauchy scale must be finite (an infinite one makes the cost NaN).
+  if (!(loss_scale_rad <= 0.0)) {
+    RequirePositiveAtMost(loss_scale_rad, std::numeric_limits<double>::max(),
+                          "RelativePoseRefinementOptions::loss_scale_rad (or <= 0: plain least squares)");
+  }
+  // 0 only evaluates the initial cost (Ceres accepts it).
+  RequireAtLeast(max_num_iterations, 0, "RelativePoseRefinementOptions::max_num_iterations");
 }
 
 }  // namespace sfm_pruning

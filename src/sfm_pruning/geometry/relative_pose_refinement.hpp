@@ -17,6 +17,9 @@ struct RelativePoseRefinementOptions {
   // Refinement runs on RANSAC inliers, so this only softens the pull of borderline matches.
   double loss_scale_rad = 0.0;
   int max_num_iterations = 50;
+
+  // Throws std::invalid_argument naming the first field out of range (util/option_checks.hpp).
+  void Check() const;
 };
 
 struct RelativePoseRefinementSummary {

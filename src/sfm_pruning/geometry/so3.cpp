@@ -6,6 +6,8 @@
 #include <Eigen/Geometry>
 #include <Eigen/SVD>
 
+#include "sfm_pruning/util/option_checks.hpp"
+
 namespace sfm_pruning {
 namespace {
 
@@ -75,6 +77,7 @@ Eigen::Matrix3d ChordalMeanRotation(const std::vector<Eigen::Matrix3d>& rotation
 RotationMeanResult GeodesicMeanRotation(const std::vector<Eigen::Matrix3d>& rotations,
                                         const GeodesicMeanOptions& options,
                                         const std::vector<double>& weights) {
+  options.Check();
   RotationMeanResult result;
   if (rotations.empty()) return result;
   result.rotation = ChordalMeanRotation(rotations, weights);
@@ -101,6 +104,14 @@ RotationMeanResult GeodesicMeanRotation(const std::vector<Eigen::Matrix3d>& rota
     }
   }
   return result;
+}
+
+void GeodesicMeanOptions::Check() const {
+  // 0 iterations returns the chordal mean; a tolerance of 0 runs every iteration.
+  RequireAtLeast(max_iterations, 0, "GeodesicMeanOptions::max_iterations");
+  RequireAtLeast(convergence_tolerance_rad, 0.0, "GeodesicMeanOptions::convergence_tolerance_rad");
+  // 0 would divide by zero; residuals are angles in [0, pi], so a floor above pi clamps them all.
+  RequirePositiveAtMost(l1_min_residual_rad, M_PI, "GeodesicMeanOptions::l1_min_residual_rad");
 }
 
 }  // namespace sfm_pruning

@@ -46,6 +46,9 @@ struct GeodesicMeanOptions {
   // L1 only: residuals below this are clamped so that an input equal to the current estimate
   // does not divide by zero.
   double l1_min_residual_rad = 1e-12;
+
+  // Throws std::invalid_argument naming the first field out of range (util/option_checks.hpp).
+  void Check() const;
 };
 
 struct RotationMeanResult {

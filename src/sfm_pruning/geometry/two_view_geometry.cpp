@@ -3,6 +3,7 @@
 #include <sstream>
 
 #include "sfm_pruning/util/error.hpp"
+#include "sfm_pruning/util/option_checks.hpp"
 
 namespace sfm_pruning {
 
@@ -10,6 +11,8 @@ TwoViewGeometry EstimateTwoViewGeometry(const FeatureSet& features_i, const Came
                                         const FeatureSet& features_j, const CameraIntrinsics& intrinsics_j,
                                         const std::vector<FeatureMatch>& matches,
                                         const TwoViewGeometryOptions& options) {
+  // Once per pair, before any work: cheap next to the RANSAC.
+  options.Check();
   std::vector<Eigen::Vector3d> bearings_i, bearings_j;
   bearings_i.reserve(matches.size());
   bearings_j.reserve(matches.size());
@@ -50,6 +53,13 @@ TwoViewGeometry EstimateTwoViewGeometry(const FeatureSet& features_i, const Came
     geometry.success = true;
   }
   return geometry;
+}
+
+void TwoViewGeometryOptions::Check() const {
+  // 0 leaves the count to the relative pose's own minimum (5 inliers).
+  RequireAtLeast(min_num_inliers, 0, "TwoViewGeometryOptions::min_num_inliers");
+  RequireInRange(min_inlier_ratio, 0.0, 1.0, "TwoViewGeometryOptions::min_inlier_ratio");
+  relative_pose.Check();
 }
 
 }  // namespace sfm_pruning

@@ -21,6 +21,9 @@ struct TwoViewGeometryOptions {
   double min_inlier_ratio = 0.25;
   // RANSAC threshold (max_angular_error_deg), ransac (iterations, confidence, seed), refinement.
   RelativePoseOptions relative_pose;
+
+  // Throws std::invalid_argument naming the first field out of range (util/option_checks.hpp).
+  void Check() const;
 };
 
 struct TwoViewGeometry {

@@ -1,8 +1,11 @@
 #include "sfm_pruning/global/bundle_adjustment.hpp"
 
+#include "sfm_pruning/util/option_checks.hpp"
+
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <limits>
 #include <memory>
 #include <vector>
 
@@ -278,6 +281,21 @@ BundleAdjustmentResult AdjustBundle(const BundleAdjustmentOptions& options, SfmD
   BundleAdjustmentResult result = AdjustBundleUntimed(options, sfm_data);
   result.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   return result;
+}
+
+void BundleAdjustmentOptions::Check() const {
+  // <= 0 switches the loss or a prior off, so any number is in range; only NaN is not.
+  RequireNumber(huber_loss_scale_px, "BundleAdjustmentOptions::huber_loss_scale_px (<= 0: off)");
+  RequireNumber(principal_point_prior_sigma, "BundleAdjustmentOptions::principal_point_prior_sigma (<= 0: off)");
+  RequireNumber(distortion_prior_sigma, "BundleAdjustmentOptions::distortion_prior_sigma (<= 0: off)");
+  // Ceres' own bounds (0 iterations only evaluate the cost).
+  RequireAtLeast(max_num_iterations, 0, "BundleAdjustmentOptions::max_num_iterations");
+  RequireAtLeast(function_tolerance, 0.0, "BundleAdjustmentOptions::function_tolerance");
+  RequireAtLeast(gradient_tolerance, 0.0, "BundleAdjustmentOptions::gradient_tolerance");
+  RequireAtLeast(parameter_tolerance, 0.0, "BundleAdjustmentOptions::parameter_tolerance");
+  RequireAtLeast(num_threads, 1, "BundleAdjustmentOptions::num_threads");
+  RequireAtLeast<size_t>(min_observations_per_thread, 1,
+                         "BundleAdjustmentOptions::min_observations_per_thread");
 }
 
 }  // namespace sfm_pruning

@@ -66,6 +66,9 @@ struct BundleAdjustmentOptions {
   // parallel evaluation brings (templeSparseRing's focal search, 583 observations: 0.17 s with 2
   // threads, 0.11 s with 1; its 4,750-observation adjustments take the same time either way).
   size_t min_observations_per_thread = 2500;
+
+  // Throws std::invalid_argument naming the first field out of range (util/option_checks.hpp).
+  void Check() const;
 };
 
 struct BundleAdjustmentResult {

@@ -1,5 +1,7 @@
 #include "sfm_pruning/global/focal_calibration.hpp"
 
+#include "sfm_pruning/util/option_checks.hpp"
+
 #include <algorithm>
 #include <cmath>
 #include <limits>
@@ -211,6 +213,7 @@ PairInliers InliersOfEdges(const ViewGraph& graph) {
 FocalCalibrationReport CalibrateFocalLengths(const FocalCalibrationOptions& options, const std::set<IndexT>& calibrate,
                                              const PairInliers& pairs, const FeaturesPerView& features,
                                              SfmData* scene) {
+  options.Check();
   FocalCalibrationReport report;
   report.num_pairs_given = pairs.size();
   const std::vector<PairModel> models = FitPairs(options, calibrate, pairs, features, *scene, &report);
@@ -281,6 +284,24 @@ FocalCalibrationReport CalibrateFocalLengths(const FocalCalibrationOptions& opti
     if (camera.model() == CameraModel::kPinholeFxFy) params[1] *= ratio;
   }
   return report;
+}
+
+void FocalCalibrationOptions::Check() const {
+  // The range is searched in log(focal / prior): both ends positive and finite, in increasing order.
+  RequirePositiveAtMost(min_focal_ratio, 1e6, "FocalCalibrationOptions::min_focal_ratio");
+  RequirePositiveAtMost(max_focal_ratio, 1e6, "FocalCalibrationOptions::max_focal_ratio");
+  if (!(max_focal_ratio > min_focal_ratio)) {
+    throw std::invalid_argument("FocalCalibrationOptions::max_focal_ratio must exceed min_focal_ratio");
+  }
+  // The grid's two ends at least.
+  RequireAtLeast(num_grid_steps, 2, "FocalCalibrationOptions::num_grid_steps");
+  RequirePositiveAtMost(gap_loss_scale, 1e6, "FocalCalibrationOptions::gap_loss_scale");
+  RequireAtLeast(min_f_definition, 0.0, "FocalCalibrationOptions::min_f_definition");
+  RequirePositiveAtMost(sampson_scale_px, 1e6, "FocalCalibrationOptions::sampson_scale_px");
+  // An intrinsic without a pair would take the grid's start as its focal.
+  RequireAtLeast<size_t>(min_pairs_per_intrinsic, 1, "FocalCalibrationOptions::min_pairs_per_intrinsic");
+  RequirePositiveAtMost(sharpness_step, 1e6, "FocalCalibrationOptions::sharpness_step");
+  RequireAtLeast(min_sharpness, 0.0, "FocalCalibrationOptions::min_sharpness");
 }
 
 }  // namespace sfm_pruning

@@ -53,6 +53,9 @@ struct FocalCalibrationOptions {
   // estimate by at least this fraction of it.
   double sharpness_step = 0.1;
   double min_sharpness = 0.02;
+
+  // Throws std::invalid_argument naming the first field out of range (util/option_checks.hpp).
+  void Check() const;
 };
 
 struct IntrinsicFocalCalibration {
@@ -82,7 +85,7 @@ PairInliers InliersOfEdges(const ViewGraph& graph);  // valid edges only
 // `pairs`: the inlier matches of verified pairs (FeatureMatch::i in ViewPair::first). Calibrates
 // the focal of each intrinsic of `calibrate` (ids of scene->intrinsics, pinhole family) and
 // writes the accepted ones into scene->intrinsics; other intrinsics are held as they are.
-// Deterministic (no random choice). Never prints.
+// Deterministic (no random choice). Never prints. Throws std::invalid_argument when options.Check() does.
 FocalCalibrationReport CalibrateFocalLengths(const FocalCalibrationOptions& options, const std::set<IndexT>& calibrate,
                                              const PairInliers& pairs, const FeaturesPerView& features,
                                              SfmData* scene);

@@ -1,5 +1,7 @@
 #include "sfm_pruning/global/global_engine.hpp"
 
+#include "sfm_pruning/util/option_checks.hpp"
+
 #include <algorithm>
 #include <chrono>
 #include <map>
@@ -284,6 +286,7 @@ GlobalEngineOptions WithFocalSearchSchedule(GlobalEngineOptions options, const F
 void RunGlobalEngine(const GlobalEngineOptions& options, const ViewGraph& graph, const SfmData& views_and_intrinsics,
                      const FeaturesPerView& features, SfmData* out, GlobalEngineReport* report,
                      const ProgressCallback& progress) {
+  options.Check();
   RunEngine(graph, views_and_intrinsics, out, report, [&](GlobalEngineReport* r, std::map<IndexT, std::string>* d) {
     return RunStages(options, graph, features, out, r, d, progress);
   });
@@ -292,9 +295,36 @@ void RunGlobalEngine(const GlobalEngineOptions& options, const ViewGraph& graph,
 void RefineGlobalModel(const GlobalEngineOptions& options, const ViewGraph& graph, const SfmData& initial,
                        const FeaturesPerView& features, SfmData* out, GlobalEngineReport* report,
                        const ProgressCallback& progress) {
+  options.Check();
   RunEngine(graph, initial, out, report, [&](GlobalEngineReport* r, std::map<IndexT, std::string>* d) {
     return RunRefinementStages(options, graph, initial, features, out, r, d, progress);
   });
+}
+
+void GlobalEngineOptions::Check() const {
+  rotation.Check();
+  tracks.Check();
+  global_positioning.Check();
+  translation_averaging.Check();
+  bundle.Check();
+  filtering.Check();
+  retriangulation.Check();
+  RequireAtLeast(num_bundle_rounds, 0, "GlobalEngineOptions::num_bundle_rounds");
+  first_bundle_subsampling.Check();
+  // The overrides of the solvers' own settings, with the same bounds as those.
+  RequireAtLeast(positioning_function_tolerance, 0.0, "GlobalEngineOptions::positioning_function_tolerance");
+  RequireAtLeast(positioning_max_num_iterations, 0, "GlobalEngineOptions::positioning_max_num_iterations");
+  RequireAtLeast(positioning_max_num_resolve_iterations, 0,
+                 "GlobalEngineOptions::positioning_max_num_resolve_iterations");
+  RequireAtLeast(positioning_random_starts, 1, "GlobalEngineOptions::positioning_random_starts");
+  RequireAtLeast(positioning_start_screening_iterations, 0,
+                 "GlobalEngineOptions::positioning_start_screening_iterations");
+  RequireAtLeast(intermediate_function_tolerance, 0.0,
+                 "GlobalEngineOptions::intermediate_function_tolerance");
+  RequireAtLeast(final_function_tolerance, 0.0, "GlobalEngineOptions::final_function_tolerance");
+  RequireAtLeast(intermediate_max_num_iterations, 0, "GlobalEngineOptions::intermediate_max_num_iterations");
+  // min_observations_per_view and seed take any value.
+  RequireAtLeast(num_threads, 1, "GlobalEngineOptions::num_threads");
 }
 
 }  // namespace sfm_pruning

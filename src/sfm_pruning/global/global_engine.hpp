@@ -112,6 +112,9 @@ struct GlobalEngineOptions {
   uint64_t seed = 0;
   // Ceres threads of positioning and bundle adjustment (1 = bitwise reproducible).
   int num_threads = 1;
+
+  // Throws std::invalid_argument naming the first field out of range (util/option_checks.hpp).
+  void Check() const;
 };
 
 // The schedule of a solve whose only product is the focal length of cameras that the view-graph
@@ -164,7 +167,8 @@ struct GlobalEngineReport {
 // `views_and_intrinsics` supplies views + intrinsics (poses and structure are ignored); `out`
 // receives them with the estimated poses and landmarks (landmark observations name feature ids).
 // On failure out holds the views and intrinsics without poses and report->success is false.
-// Progress: the stage names of the estimators plus "bundle adjustment".
+// Progress: the stage names of the estimators plus "bundle adjustment". Throws std::invalid_argument
+// when options.Check() does.
 void RunGlobalEngine(const GlobalEngineOptions& options, const ViewGraph& graph,
                      const SfmData& views_and_intrinsics, const FeaturesPerView& features, SfmData* out,
                      GlobalEngineReport* report, const ProgressCallback& progress = {});
@@ -175,7 +179,7 @@ void RunGlobalEngine(const GlobalEngineOptions& options, const ViewGraph& graph,
 // RunGlobalEngine. For a graph that differs by a few edges from the one `initial` was solved from
 // (the model audit, view_graph_pruning.hpp): the rotation averaging and the positioning, most of a
 // solve's time, are not repeated. Same output contract as RunGlobalEngine (`out` keeps the
-// intrinsics of `initial`).
+// intrinsics of `initial`). Throws std::invalid_argument when options.Check() does.
 void RefineGlobalModel(const GlobalEngineOptions& options, const ViewGraph& graph, const SfmData& initial,
                        const FeaturesPerView& features, SfmData* out, GlobalEngineReport* report,
                        const ProgressCallback& progress = {});

@@ -1,5 +1,7 @@
 #include "sfm_pruning/global/global_positioning.hpp"
 
+#include "sfm_pruning/util/option_checks.hpp"
+
 #include <algorithm>
 #include <set>
 
@@ -109,6 +111,13 @@ PositioningResult TriangulateFromPoses(const GlobalPositioningOptions& options,
   WritePositionedScene(rotations, centers, rays, points, options.max_angular_residual_deg, sfm_data, &result);
   result.success = true;
   return result;
+}
+
+void GlobalPositioningOptions::Check() const {
+  solver.Check();
+  RequirePositiveAtMost(max_angular_residual_deg, 180.0,
+                        "GlobalPositioningOptions::max_angular_residual_deg");
+  subsampling.Check();
 }
 
 }  // namespace sfm_pruning

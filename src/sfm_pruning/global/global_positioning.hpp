@@ -39,6 +39,9 @@ struct GlobalPositioningOptions {
   // like the solved ones. The solve's cost is linear in its observations, and camera centres from
   // a few hundred tracks per view spread over the image are as accurate as from all of them.
   TrackSubsamplingOptions subsampling{500, 8};
+
+  // Throws std::invalid_argument naming the first field out of range (util/option_checks.hpp).
+  void Check() const;
 };
 
 // Positions every view that has a rotation (world -> camera, keyed by view id), intrinsics, a

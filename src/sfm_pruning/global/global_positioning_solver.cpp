@@ -1,6 +1,9 @@
 #include "sfm_pruning/global/global_positioning_solver.hpp"
 
+#include "sfm_pruning/util/option_checks.hpp"
+
 #include <algorithm>
+#include <limits>
 #include <memory>
 #include <numeric>
 #include <random>
@@ -183,6 +186,26 @@ PositioningSolverSummary SolveRayAlignment(const PositioningSolverOptions& optio
   for (size_t k = 0; k < constraints.size(); ++k) summary.rejected[k] = !is_kept[k];
   summary.num_rejected = constraints.size() - kept.size();
   return summary;
+}
+
+void PositioningSolverOptions::Check() const {
+  // <= 0 means plain least squares, so any number is in range; only NaN is not.
+  RequireNumber(huber_scale, "PositioningSolverOptions::huber_scale (<= 0: plain least squares)");
+  // Strictly positive (see the header); a cube of size 0 starts every position at one point.
+  RequirePositiveAtMost(min_ray_scale, 1e6, "PositioningSolverOptions::min_ray_scale");
+  RequirePositiveAtMost(init_cube_half_size, 1e6, "PositioningSolverOptions::init_cube_half_size");
+  RequireAtLeast(num_random_starts, 1, "PositioningSolverOptions::num_random_starts");
+  // 0 screens no start; 0 rejection rounds leave one solve.
+  RequireAtLeast(start_screening_iterations, 0, "PositioningSolverOptions::start_screening_iterations");
+  RequireAtLeast(num_rejection_rounds, 0, "PositioningSolverOptions::num_rejection_rounds");
+  RequirePositiveAtMost(rejection_threshold_deg, 180.0, "PositioningSolverOptions::rejection_threshold_deg");
+  // Ceres' own bounds.
+  RequireAtLeast(max_num_iterations, 0, "PositioningSolverOptions::max_num_iterations");
+  RequireAtLeast(max_num_resolve_iterations, 0, "PositioningSolverOptions::max_num_resolve_iterations");
+  RequireAtLeast(function_tolerance, 0.0, "PositioningSolverOptions::function_tolerance");
+  RequireAtLeast(gradient_tolerance, 0.0, "PositioningSolverOptions::gradient_tolerance");
+  RequireAtLeast(parameter_tolerance, 0.0, "PositioningSolverOptions::parameter_tolerance");
+  RequireAtLeast(num_threads, 1, "PositioningSolverOptions::num_threads");
 }
 
 }  // namespace sfm_pruning

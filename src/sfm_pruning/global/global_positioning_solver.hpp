@@ -77,6 +77,9 @@ struct PositioningSolverOptions {
   int num_threads = 1;
   // Called after each Ceres iteration with (stage, iteration, max_num_iterations).
   ProgressCallback progress;
+
+  // Throws std::invalid_argument naming the first field out of range (util/option_checks.hpp).
+  void Check() const;
 };
 
 struct PositioningSolverSummary {

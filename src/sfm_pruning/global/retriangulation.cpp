@@ -1,5 +1,7 @@
 #include "sfm_pruning/global/retriangulation.hpp"
 
+#include "sfm_pruning/util/option_checks.hpp"
+
 #include <cmath>
 #include <limits>
 #include <optional>
@@ -99,6 +101,13 @@ RetriangulationResult RetriangulateLandmarks(const RetriangulationOptions& optio
     }
   }
   return result;
+}
+
+void RetriangulationOptions::Check() const {
+  // 0 px would restore nothing; the angle is between two rays (0: any angle).
+  RequirePositiveAtMost(max_reprojection_error_px, 1e6, "RetriangulationOptions::max_reprojection_error_px");
+  RequireInRange(min_triangulation_angle_deg, 0.0, 180.0,
+                 "RetriangulationOptions::min_triangulation_angle_deg");
 }
 
 }  // namespace sfm_pruning

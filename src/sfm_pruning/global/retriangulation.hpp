@@ -28,6 +28,9 @@ struct RetriangulationOptions {
   double min_triangulation_angle_deg = 1.5;
   // Re-add removed observations / landmarks given to RetriangulateLandmarks.
   bool complete_tracks = true;
+
+  // Throws std::invalid_argument naming the first field out of range (util/option_checks.hpp).
+  void Check() const;
 };
 
 struct RetriangulationResult {

@@ -1,5 +1,7 @@
 #include "sfm_pruning/global/rotation_averaging.hpp"
 
+#include "sfm_pruning/util/option_checks.hpp"
+
 #include <algorithm>
 #include <iterator>
 #include <numeric>
@@ -201,6 +203,24 @@ RotationAveragingResult EstimateGlobalRotations(ViewGraph* graph, const Rotation
   if (options.remove_dropped_views_from_graph) graph->RemoveNodes(result.dropped_views);
   result.success = true;
   return result;
+}
+
+void RotationAveragingOptions::Check() const {
+  // A threshold on an angle between two rotations; the stages' scales only need to be positive.
+  RequirePositiveAtMost(max_relative_rotation_error_deg, 180.0,
+                        "RotationAveragingOptions::max_relative_rotation_error_deg");
+  RequireAtLeast(max_l1_iterations, 0, "RotationAveragingOptions::max_l1_iterations");
+  RequirePositiveAtMost(l1_residual_floor_deg, 1e6, "RotationAveragingOptions::l1_residual_floor_deg");
+  RequireAtLeast(l1_convergence_tolerance_rad, 0.0, "RotationAveragingOptions::l1_convergence_tolerance_rad");
+  RequireInRange(l1_min_relative_cost_decrease, 0.0, 1.0,
+                 "RotationAveragingOptions::l1_min_relative_cost_decrease");
+  RequireAtLeast(max_irls_iterations, 0, "RotationAveragingOptions::max_irls_iterations");
+  RequirePositiveAtMost(irls_loss_scale_deg, 1e6, "RotationAveragingOptions::irls_loss_scale_deg");
+  RequireAtLeast(convergence_tolerance_rad, 0.0, "RotationAveragingOptions::convergence_tolerance_rad");
+  // As RotationIncrementSolverOptions, which the stages are given.
+  RequirePositiveAtMost(linear_solver_relative_tolerance, 1.0,
+                        "RotationAveragingOptions::linear_solver_relative_tolerance");
+  RequireAtLeast(max_linear_solver_iterations, 1, "RotationAveragingOptions::max_linear_solver_iterations");
 }
 
 }  // namespace sfm_pruning

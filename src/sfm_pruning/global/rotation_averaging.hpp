@@ -53,6 +53,9 @@ struct RotationAveragingOptions {
   // Conjugate gradients of each step (rotation_increment_solver.hpp).
   double linear_solver_relative_tolerance = 1e-10;
   int max_linear_solver_iterations = 1000;
+
+  // Throws std::invalid_argument naming the first field out of range (util/option_checks.hpp).
+  void Check() const;
 };
 
 // Angles between R_ij and R_j R_i^T over a set of edges, in degrees (0 for an empty set).

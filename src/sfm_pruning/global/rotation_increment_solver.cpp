@@ -1,5 +1,7 @@
 #include "sfm_pruning/global/rotation_increment_solver.hpp"
 
+#include "sfm_pruning/util/option_checks.hpp"
+
 #include <Eigen/IterativeLinearSolvers>
 #include <Eigen/SparseCholesky>
 #include <Eigen/SparseCore>
@@ -133,6 +135,15 @@ RotationIncrementSolution RotationIncrementSolver::Solve(const std::vector<doubl
     if (!impl.IsGauge(index)) solution.increments[index] = x.row(impl.Row(index)).transpose();
   }
   return solution;
+}
+
+void RotationIncrementSolverOptions::Check() const {
+  // 0: always conjugate gradients.
+  RequireAtLeast(max_direct_factor_nonzeros_per_view, 0.0,
+                 "RotationIncrementSolverOptions::max_direct_factor_nonzeros_per_view");
+  // Relative to |b|: 1 is already met by x = 0.
+  RequirePositiveAtMost(relative_tolerance, 1.0, "RotationIncrementSolverOptions::relative_tolerance");
+  RequireAtLeast(max_iterations, 1, "RotationIncrementSolverOptions::max_iterations");
 }
 
 }  // namespace sfm_pruning

@@ -36,6 +36,9 @@ struct RotationIncrementSolverOptions {
   double relative_tolerance = 1e-10;
   // Per coordinate. Incomplete-Cholesky CG needs a few tens on typical view graphs.
   int max_iterations = 1000;
+
+  // Throws std::invalid_argument naming the first field out of range (util/option_checks.hpp).
+  void Check() const;
 };
 
 struct RotationIncrementSolution {

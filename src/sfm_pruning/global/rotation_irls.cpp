@@ -1,5 +1,7 @@
 #include "sfm_pruning/global/rotation_irls.hpp"
 
+#include "sfm_pruning/util/option_checks.hpp"
+
 #include <algorithm>
 #include <cmath>
 
@@ -61,6 +63,7 @@ RotationIrlsSummary RefineRotationsIrls(const RotationProblem& problem, size_t g
                                         const RotationIrlsOptions& options,
                                         std::vector<Eigen::Matrix3d>* rotations,
                                         const ProgressCallback& progress, const std::string& stage) {
+  options.Check();
   RotationIrlsSummary summary;
   WeightedResiduals current = EvaluateResiduals(problem, *rotations, options);
   summary.initial_cost = summary.final_cost = current.cost;
@@ -108,6 +111,17 @@ RotationIrlsSummary RefineRotationsIrls(const RotationProblem& problem, size_t g
     }
   }
   return summary;
+}
+
+void RotationIrlsOptions::Check() const {
+  // The weights divide by the scale.
+  RequirePositiveAtMost(loss_scale_rad, 1e6, "RotationIrlsOptions::loss_scale_rad");
+  // 0 iterations leave the rotations as given.
+  RequireAtLeast(max_iterations, 0, "RotationIrlsOptions::max_iterations");
+  RequireAtLeast(convergence_tolerance_rad, 0.0, "RotationIrlsOptions::convergence_tolerance_rad");
+  // A fraction of the cost (0: never).
+  RequireInRange(min_relative_cost_decrease, 0.0, 1.0, "RotationIrlsOptions::min_relative_cost_decrease");
+  linear_solver.Check();
 }
 
 }  // namespace sfm_pruning

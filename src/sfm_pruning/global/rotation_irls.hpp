@@ -49,6 +49,9 @@ struct RotationIrlsOptions {
   // iterations would cling to it (Weiszfeld's iteration started on a data point).
   bool uniform_first_step = false;
   RotationIncrementSolverOptions linear_solver;
+
+  // Throws std::invalid_argument naming the first field out of range (util/option_checks.hpp).
+  void Check() const;
 };
 
 struct RotationIrlsSummary {
@@ -64,7 +67,8 @@ struct RotationIrlsSummary {
 
 // Refines `rotations` (dense, problem.view_ids order) in place; the view at `gauge_index` does
 // not move. Calls progress(stage, iteration, max_iterations) after each iteration.
-// On failure `rotations` holds the last finite estimate.
+// On failure `rotations` holds the last finite estimate. Throws std::invalid_argument when
+// options.Check() does.
 RotationIrlsSummary RefineRotationsIrls(const RotationProblem& problem, size_t gauge_index,
                                         const RotationIrlsOptions& options,
                                         std::vector<Eigen::Matrix3d>* rotations,

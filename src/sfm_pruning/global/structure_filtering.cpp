@@ -1,5 +1,7 @@
 #include "sfm_pruning/global/structure_filtering.hpp"
 
+#include "sfm_pruning/util/option_checks.hpp"
+
 #include <cmath>
 #include <vector>
 
@@ -61,6 +63,16 @@ StructureFilteringResult FilterStructure(const StructureFilteringOptions& option
     ++it;
   }
   return result;
+}
+
+void StructureFilteringOptions::Check() const {
+  // 0 px would remove every observation; the angle is between two rays (0: any angle).
+  RequirePositiveAtMost(max_reprojection_error_px, 1e6,
+                        "StructureFilteringOptions::max_reprojection_error_px");
+  RequireInRange(min_triangulation_angle_deg, 0.0, 180.0,
+                 "StructureFilteringOptions::min_triangulation_angle_deg");
+  // One observation cannot fix a point.
+  RequireAtLeast<size_t>(min_num_observations, 2, "StructureFilteringOptions::min_num_observations");
 }
 
 }  // namespace sfm_pruning

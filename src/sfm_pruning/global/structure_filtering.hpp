@@ -28,6 +28,9 @@ struct StructureFilteringOptions {
   double min_triangulation_angle_deg = 1.5;
   // Posed observations a landmark needs to be kept (< 2 cannot be triangulated).
   size_t min_num_observations = 2;
+
+  // Throws std::invalid_argument naming the first field out of range (util/option_checks.hpp).
+  void Check() const;
 };
 
 struct StructureFilteringResult {

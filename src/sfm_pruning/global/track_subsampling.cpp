@@ -1,5 +1,7 @@
 #include "sfm_pruning/global/track_subsampling.hpp"
 
+#include "sfm_pruning/util/option_checks.hpp"
+
 #include <algorithm>
 #include <map>
 #include <numeric>
@@ -79,6 +81,11 @@ std::vector<size_t> SelectWellDistributedTracks(const std::vector<SampledTrack>&
     if (selected[t]) kept.push_back(t);
   }
   return kept;
+}
+
+void TrackSubsamplingOptions::Check() const {
+  // max_tracks_per_view takes any count (0: every track); an image needs one cell at least.
+  RequireAtLeast<size_t>(grid_cells, 1, "TrackSubsamplingOptions::grid_cells");
 }
 
 }  // namespace sfm_pruning

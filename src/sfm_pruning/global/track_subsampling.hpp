@@ -26,6 +26,9 @@ struct TrackSubsamplingOptions {
   size_t max_tracks_per_view = 0;
   // Cells per image side.
   size_t grid_cells = 8;
+
+  // Throws std::invalid_argument naming the first field out of range (util/option_checks.hpp).
+  void Check() const;
 };
 
 // What the selection needs of one observation of a track.

@@ -1,5 +1,7 @@
 #include "sfm_pruning/global/tracks.hpp"
 
+#include "sfm_pruning/util/option_checks.hpp"
+
 #include <algorithm>
 #include <numeric>
 #include <utility>
@@ -116,6 +118,12 @@ TrackBuildingResult BuildTracks(const ViewGraph& graph, const TrackBuildingOptio
   result.tracks.reserve(selected.size());
   for (const size_t index : selected) result.tracks.push_back(std::move(tracks[index]));
   return result;
+}
+
+void TrackBuildingOptions::Check() const {
+  // Every track has two views (a match joins two), so a smaller minimum would mean nothing. The caps
+  // take any count (0: no cap).
+  RequireAtLeast<size_t>(min_track_length, 2, "TrackBuildingOptions::min_track_length");
 }
 
 }  // namespace sfm_pruning

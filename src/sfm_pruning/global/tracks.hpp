@@ -29,6 +29,9 @@ struct TrackBuildingOptions {
   size_t max_tracks_per_view = 0;
   // Stops after this many kept tracks (applied after the per-view rule, same order).
   size_t max_num_tracks = 0;
+
+  // Throws std::invalid_argument naming the first field out of range (util/option_checks.hpp).
+  void Check() const;
 };
 
 struct TrackBuildingResult {

@@ -1,5 +1,7 @@
 #include "sfm_pruning/global/translation_averaging.hpp"
 
+#include "sfm_pruning/util/option_checks.hpp"
+
 #include <algorithm>
 #include <set>
 
@@ -71,6 +73,12 @@ TranslationAveragingResult PositionCamerasByTranslationAveraging(const Translati
   WritePositionedScene(rotations, center_of, rays, points, options.max_angular_residual_deg, sfm_data, &positioning);
   positioning.success = true;
   return result;
+}
+
+void TranslationAveragingOptions::Check() const {
+  solver.Check();
+  RequirePositiveAtMost(max_angular_residual_deg, 180.0,
+                        "TranslationAveragingOptions::max_angular_residual_deg");
 }
 
 }  // namespace sfm_pruning

@@ -43,6 +43,9 @@ struct TranslationAveragingOptions {
   // positioning).
   TriangulationMethod triangulation = TriangulationMethod::kDlt;
   double max_angular_residual_deg = 3.0;
+
+  // Throws std::invalid_argument naming the first field out of range (util/option_checks.hpp).
+  void Check() const;
 };
 
 struct TranslationAveragingResult {

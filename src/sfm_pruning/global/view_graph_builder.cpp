@@ -1,5 +1,7 @@
 #include "sfm_pruning/global/view_graph_builder.hpp"
 
+#include "sfm_pruning/util/option_checks.hpp"
+
 #include <algorithm>
 #include <atomic>
 #include <exception>
@@ -164,6 +166,7 @@ uint64_t PairSeed(uint64_t base_seed, IndexT a, IndexT b) {
 ViewGraph BuildViewGraphFromMatches(const ViewGraphBuildOptions& options, const SfmData& views_and_intrinsics,
                                     const FeaturesPerView& features, const PairwiseMatches& putative,
                                     ViewGraphBuildReport* report, const ProgressCallback& progress) {
+  options.Check();
   std::vector<PairJob> jobs;
   jobs.reserve(putative.size());
   for (const auto& [pair, matches] : putative) jobs.push_back({pair, &matches, nullptr});
@@ -173,12 +176,18 @@ ViewGraph BuildViewGraphFromMatches(const ViewGraphBuildOptions& options, const 
 ViewGraph BuildViewGraphFromVerifiedPairs(const ViewGraphBuildOptions& options, const SfmData& views_and_intrinsics,
                                           const FeaturesPerView& features, const VerifiedPairs& verified,
                                           ViewGraphBuildReport* report, const ProgressCallback& progress) {
+  options.Check();
   std::vector<PairJob> jobs;
   jobs.reserve(verified.size());
   for (const auto& [pair, entry] : verified) {
     jobs.push_back({pair, &entry.inliers, entry.relative_pose ? &*entry.relative_pose : nullptr});
   }
   return BuildFromJobs(options, views_and_intrinsics, features, jobs, report, progress);
+}
+
+void ViewGraphBuildOptions::Check() const {
+  // seed and num_threads take any value (<= 0 threads: 1).
+  two_view.Check();
 }
 
 }  // namespace sfm_pruning

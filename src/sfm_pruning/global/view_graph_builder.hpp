@@ -32,6 +32,9 @@ struct ViewGraphBuildOptions {
   int num_threads = 1;
   // Remove every view outside the largest connected component (reported in dropped_views).
   bool keep_largest_component = true;
+
+  // Throws std::invalid_argument naming the first field out of range (util/option_checks.hpp).
+  void Check() const;
 };
 
 struct RejectedPair {
@@ -60,15 +63,16 @@ uint64_t PairSeed(uint64_t base_seed, IndexT a, IndexT b);
 // Verifies every pair of `putative` whose views have intrinsics and features (pairs naming
 // anything else are rejected with the reason). Nodes: every view of `views_and_intrinsics`.
 // Edges: accepted pairs with their inlier matches and relative pose, weight = inliers.
-// Throws Error when a match names a feature that does not exist. Progress stage:
-// "verifying pairs".
+// Throws Error when a match names a feature that does not exist, std::invalid_argument when
+// options.Check() does. Progress stage: "verifying pairs".
 ViewGraph BuildViewGraphFromMatches(const ViewGraphBuildOptions& options, const SfmData& views_and_intrinsics,
                                     const FeaturesPerView& features, const PairwiseMatches& putative,
                                     ViewGraphBuildReport* report = nullptr, const ProgressCallback& progress = {});
 
 // The same from already verified pairs: a pair with a relative pose is accepted when it has at
 // least min_num_inliers inliers; a pair without one gets its pose re-estimated from its inliers
-// with the same estimator and thresholds (edge matches = the re-estimation's inliers).
+// with the same estimator and thresholds (edge matches = the re-estimation's inliers). Throws as
+// BuildViewGraphFromMatches.
 ViewGraph BuildViewGraphFromVerifiedPairs(const ViewGraphBuildOptions& options, const SfmData& views_and_intrinsics,
                                           const FeaturesPerView& features, const VerifiedPairs& verified,
                                           ViewGraphBuildReport* report = nullptr,

@@ -85,6 +85,7 @@ SfmData ReadModel(const fs::path& path) {
 }
 
 void WriteModel(const SfmData& data, const fs::path& path, const ModelWriteOptions& options) {
+  options.Check();
   switch (OutputModelFormat(path)) {
     case ModelFormat::kColmapModel:
       WriteColmapModel(data, path, options.colmap_text ? ColmapModelFormat::kText : ColmapModelFormat::kBinary);
@@ -103,5 +104,7 @@ void WriteModel(const SfmData& data, const fs::path& path, const ModelWriteOptio
       return;
   }
 }
+
+void ModelWriteOptions::Check() const {}
 
 }  // namespace sfm_pruning

@@ -40,6 +40,10 @@ SfmData ReadModel(const std::filesystem::path& path);
 
 struct ModelWriteOptions {
   bool colmap_text = false;  // COLMAP folders: .txt files instead of .bin
+
+  // Both values are valid: there is nothing to refuse. Kept so that every options struct has one
+  // (util/option_checks.hpp).
+  void Check() const;
 };
 
 // Writes `data` in the format OutputModelFormat(path) selects, atomically. gt_cameras.txt needs

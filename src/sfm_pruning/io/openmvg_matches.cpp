@@ -222,6 +222,7 @@ PairwiseMatches ReadBinaryMatches(const fs::path& path, const MatchReadOptions& 
 
 PairwiseMatches ReadOpenMvgMatches(const fs::path& path, const MatchReadOptions& options,
                                    MatchReadReport* report) {
+  options.Check();
   if (report != nullptr) *report = {};
   return FormatFromExtension(path) == MatchFileFormat::kText ? ReadTextMatches(path, options, report)
                                                              : ReadBinaryMatches(path, options, report);
@@ -267,5 +268,7 @@ fs::path FindOpenMvgMatchesFile(const fs::path& matches_dir, const fs::path& exp
   throw FileError(matches_dir.string(),
                   "no match file (looked for matches.{e,f,putative}.{bin,txt}); give one explicitly");
 }
+
+void MatchReadOptions::Check() const {}
 
 }  // namespace sfm_pruning

@@ -21,6 +21,10 @@ struct MatchReadOptions {
   const SfmData* sfm_data = nullptr;
   // When set, every feature index is checked against the feature count of its view.
   const FeaturesPerView* features = nullptr;
+
+  // Either pointer may be null (that check is then skipped): there is nothing to refuse. Kept so
+  // that every options struct has one (util/option_checks.hpp).
+  void Check() const;
 };
 
 struct MatchReadReport {

@@ -33,6 +33,7 @@ std::vector<PlyVertex> CollectVertices(const SfmData& data, const PlyWriteOption
 }  // namespace
 
 void WritePly(const SfmData& data, const std::filesystem::path& path, const PlyWriteOptions& options) {
+  options.Check();
   const std::vector<PlyVertex> vertices = CollectVertices(data, options);
   WriteFileAtomically(path, options.binary, [&](std::ostream& out) {
     out << "ply\nformat " << (options.binary ? "binary_little_endian" : "ascii") << " 1.0\n"
@@ -203,5 +204,7 @@ SfmData ReadPlyPoints(const std::filesystem::path& path) {
   }
   return data;
 }
+
+void PlyWriteOptions::Check() const {}
 
 }  // namespace sfm_pruning

@@ -12,6 +12,10 @@ struct PlyWriteOptions {
   bool binary = true;            // binary_little_endian; ASCII when false
   bool include_cameras = true;   // camera centres as extra green vertices
   bool include_control_points = false;
+
+  // Every combination is valid: there is nothing to refuse. Kept so that every options struct
+  // has one (util/option_checks.hpp).
+  void Check() const;
 };
 
 // Writes vertices x y z (double) + red green blue (uchar). Atomic.

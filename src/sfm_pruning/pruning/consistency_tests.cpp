@@ -115,7 +115,7 @@ void TestBaselineRatios(const ViewGraph& graph, const SubgraphSolution& solution
 
 void ConsistencyTestOptions::Check() const {
   RequirePositiveAtMost(loop_step_deg, 180.0, "ConsistencyTestOptions::loop_step_deg");
-  RequireAtLeast<size_t>(cycles.max_cycle_length, 3, "ConsistencyTestOptions::cycles.max_cycle_length");
+  cycles.Check();
   RequirePositiveAtMost(max_relative_rotation_error_deg, 180.0, "ConsistencyTestOptions::max_relative_rotation_error_deg");
   RequirePositiveAtMost(max_relative_translation_error_deg, 180.0,
                         "ConsistencyTestOptions::max_relative_translation_error_deg");

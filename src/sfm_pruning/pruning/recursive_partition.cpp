@@ -287,10 +287,11 @@ std::vector<EdgeOfSubgraphs> EdgesOfAcceptedSubgraphs(const ViewGraph& graph,
 }
 
 void RecursivePartitionOptions::Check() const {
-  RequirePositiveAtMost(louvain.resolution, 1e6, "RecursivePartitionOptions::louvain.resolution");
+  louvain.Check();
   RequireAtLeast(num_threads, 1, "RecursivePartitionOptions::num_threads");
   RequireInRange(max_depth, 0, 64, "RecursivePartitionOptions::max_depth");
   consistency.Check();
+  engine.Check();  // before any community is solved, not at the first one
 }
 
 }  // namespace sfm_pruning

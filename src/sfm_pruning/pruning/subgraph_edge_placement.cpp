@@ -121,6 +121,7 @@ void EdgePlacementOptions::Check() const {
   RequireAtLeast<size_t>(min_correspondences, 4, "EdgePlacementOptions::min_correspondences");
   RequirePositiveAtMost(coverage_max_ray_angle_deg, 180.0, "EdgePlacementOptions::coverage_max_ray_angle_deg");
   RequireAtLeast(coverage_image_margin_px, 0.0, "EdgePlacementOptions::coverage_image_margin_px");
+  pnp.Check();
 }
 
 }  // namespace sfm_pruning

@@ -395,6 +395,7 @@ PrunedGlobalEngineStep PruneAndAudit(const PrunedGlobalEngineOptions& options, c
                                      const SfmData& views_and_intrinsics, const FeaturesPerView& features,
                                      ViewGraph* pruned, SfmData* model, PrunedGlobalEngineReport* report,
                                      const ProgressCallback& progress) {
+  options.Check();
   *report = PrunedGlobalEngineReport();
   *pruned = graph;
   PruneViewGraph(options.pruning, pruned, views_and_intrinsics, features, &report->pruning, progress);
@@ -451,6 +452,11 @@ void ViewGraphPruningOptions::Check() const {
   RequireAtLeast(num_threads, 1, "ViewGraphPruningOptions::num_threads");
   audit.Check();
   landmark_check.Check();
+}
+
+void PrunedGlobalEngineOptions::Check() const {
+  pruning.Check();
+  engine.Check();
 }
 
 }  // namespace sfm_pruning

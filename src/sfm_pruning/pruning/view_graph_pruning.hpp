@@ -161,6 +161,9 @@ struct PrunedGlobalEngineOptions {
   // `num_threads` workers (the result does not depend on it), the final solve's Ceres on
   // `solver_threads` (more than 1 changes the last digits from run to run).
   void SetSeedAndThreads(uint64_t seed, int num_threads, int solver_threads = 1);
+
+  // Throws std::invalid_argument naming the first field out of range (util/option_checks.hpp).
+  void Check() const;
 };
 
 struct PrunedGlobalEngineReport {
@@ -179,6 +182,7 @@ enum class PrunedGlobalEngineStep {
 // GLOBAL_PRUNED's whole pruning, the part `prunesfm prune` shares with the engine: PruneViewGraph
 // on a copy of `graph` into *pruned, then, when the audit is on, the solve of the pruned graph
 // into *model and the audit of the removed and kept edges against it (ModelEdgeAuditOptions).
+// Throws std::invalid_argument when options.Check() does.
 PrunedGlobalEngineStep PruneAndAudit(const PrunedGlobalEngineOptions& options, const ViewGraph& graph,
                                      const SfmData& views_and_intrinsics, const FeaturesPerView& features,
                                      ViewGraph* pruned, SfmData* model, PrunedGlobalEngineReport* report,
@@ -186,7 +190,7 @@ PrunedGlobalEngineStep PruneAndAudit(const PrunedGlobalEngineOptions& options, c
 
 // GLOBAL_PRUNED: PruneAndAudit, then the final solve of the pruned graph (the audit's model
 // refined, or solved again when the audit changed edges). `graph` is copied, not modified. Same
-// output contract as RunGlobalEngine.
+// output contract as RunGlobalEngine; throws as PruneAndAudit.
 void RunPrunedGlobalEngine(const PrunedGlobalEngineOptions& options, const ViewGraph& graph,
                            const SfmData& views_and_intrinsics, const FeaturesPerView& features, SfmData* out,
                            PrunedGlobalEngineReport* report, const ProgressCallback& progress = {});

@@ -8,6 +8,7 @@
 
 #include "sfm_pruning/geometry/epipolar_geometry.hpp"
 #include "sfm_pruning/util/error.hpp"
+#include "sfm_pruning/util/option_checks.hpp"
 
 namespace sfm_pruning {
 namespace {
@@ -184,6 +185,7 @@ std::vector<std::string> ChooseCheckImages(const SfmData& model, size_t count) {
 
 std::vector<std::string> ImagesSeeingRegion(const SfmData& model, const std::string& image,
                                             const Eigen::Vector2d& point, const EpipolarCheckOptions& options) {
+  options.Check();
   const View& view = RegisteredView(model, image);
   const double radius = options.region_fraction * ImageSize(model, view).norm();
   std::map<IndexT, size_t> in_region, shared;
@@ -212,6 +214,7 @@ std::vector<std::string> ImagesSeeingRegion(const SfmData& model, const std::str
 EpipolarCheck ComputeEpipolarCheck(const SfmData& model, const std::string& image, const Eigen::Vector2d& point,
                                    const std::vector<std::string>& others, const SfmData* truth,
                                    const EpipolarCheckOptions& options) {
+  options.Check();
   const View& view = RegisteredView(model, image);
   const Eigen::Vector2d size = ImageSize(model, view);
   if (point.x() < -0.5 || point.y() < -0.5 || point.x() > size.x() - 0.5 || point.y() > size.y() - 0.5) {
@@ -262,6 +265,13 @@ EpipolarCheck ComputeEpipolarCheck(const SfmData& model, const std::string& imag
     check.others.push_back(std::move(panel));
   }
   return check;
+}
+
+void EpipolarCheckOptions::Check() const {
+  // Any max_other_views is valid (0 chooses no other image). A radius of 0 keeps what lies at the
+  // point itself; a negative one would keep nothing.
+  RequireAtLeast(region_fraction, 0.0, "EpipolarCheckOptions::region_fraction");
+  RequireAtLeast(feature_radius_px, 0.0, "EpipolarCheckOptions::feature_radius_px");
 }
 
 }  // namespace sfm_pruning

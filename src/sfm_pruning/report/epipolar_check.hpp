@@ -41,6 +41,9 @@ struct EpipolarCheckOptions {
   // An observation within this many pixels of the point is "the point's feature": its track's
   // observations are marked in the other images.
   double feature_radius_px = 12.0;
+
+  // Throws std::invalid_argument naming the first field out of range (util/option_checks.hpp).
+  void Check() const;
 };
 
 struct EpipolarPanel {

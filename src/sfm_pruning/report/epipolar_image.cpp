@@ -11,6 +11,7 @@
 #include "sfm_pruning/report/palette.hpp"
 #include "sfm_pruning/util/error.hpp"
 #include "sfm_pruning/util/image_codecs.hpp"
+#include "sfm_pruning/util/option_checks.hpp"
 
 namespace sfm_pruning {
 namespace {
@@ -104,6 +105,7 @@ cv::Mat DrawPanel(const EpipolarPanel& panel, bool is_reference, const Eigen::Ve
 
 std::vector<uint8_t> RenderEpipolarCheck(const EpipolarCheck& check, const SfmData& model,
                                          const EpipolarImageOptions& options, const std::string& extension) {
+  options.Check();
   std::vector<cv::Mat> panels = {DrawPanel(check.reference, true, check.point, model, options)};
   for (const EpipolarPanel& panel : check.others) panels.push_back(DrawPanel(panel, false, check.point, model, options));
   const int gap = 8;
@@ -125,6 +127,11 @@ std::vector<uint8_t> RenderEpipolarCheck(const EpipolarCheck& check, const SfmDa
       extension == ".jpg" ? std::vector<int>{cv::IMWRITE_JPEG_QUALITY, 88} : std::vector<int>{};
   if (!EncodeImage(extension, figure, parameters, &bytes)) throw Error("could not encode the epipolar check as " + extension);
   return bytes;
+}
+
+void EpipolarImageOptions::Check() const {
+  // Every panel is scaled to this many rows; images_dir and title take any value.
+  RequireAtLeast(panel_height, 1, "EpipolarImageOptions::panel_height");
 }
 
 }  // namespace sfm_pruning

@@ -19,6 +19,9 @@ struct EpipolarImageOptions {
   int panel_height = 320;  // every panel is scaled to this height
   std::optional<std::filesystem::path> images_dir;  // images by RelativeImagePath below it
   std::string title;  // drawn above the panels when not empty
+
+  // Throws std::invalid_argument naming the first field out of range (util/option_checks.hpp).
+  void Check() const;
 };
 
 // Encoded image bytes; `extension` is ".png" or ".jpg". Throws Error naming the file when an

@@ -4,10 +4,13 @@
 #include <cmath>
 #include <random>
 
+#include "sfm_pruning/util/option_checks.hpp"
+
 namespace sfm_pruning {
 
 std::vector<Eigen::Vector2d> ForceDirectedLayout(size_t num_nodes, const std::vector<LayoutEdge>& edges,
                                                  const GraphLayoutOptions& options) {
+  options.Check();
   std::vector<Eigen::Vector2d> position(num_nodes, Eigen::Vector2d(0.5, 0.5));
   if (num_nodes <= 1) return position;
   std::mt19937_64 rng(options.seed);
@@ -63,6 +66,14 @@ std::vector<Eigen::Vector2d> ForceDirectedLayout(size_t num_nodes, const std::ve
   const Eigen::Vector2d offset = (Eigen::Vector2d::Ones() - (high - low) / extent) / 2.0;
   for (Eigen::Vector2d& p : position) p = (p - low) / extent + offset;
   return position;
+}
+
+void GraphLayoutOptions::Check() const {
+  // 0 iterations leaves the seeded random positions.
+  RequireAtLeast(iterations, 0, "GraphLayoutOptions::iterations");
+  // Far stronger pulls overflow the displacements and turn the positions into NaN; a million times
+  // an edge spring is already far past any useful layout.
+  RequireInRange(gravity, 0.0, 1e6, "GraphLayoutOptions::gravity");
 }
 
 }  // namespace sfm_pruning

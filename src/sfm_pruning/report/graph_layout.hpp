@@ -23,6 +23,9 @@ struct GraphLayoutOptions {
   uint64_t seed = 0;
   int iterations = 400;
   double gravity = 0.3;  // a spring to the centre, as strong as this fraction of an edge spring
+
+  // Throws std::invalid_argument naming the first field out of range (util/option_checks.hpp).
+  void Check() const;
 };
 
 // Positions in the unit square [0, 1]^2 (rescaled to fill it, aspect kept), one per node.

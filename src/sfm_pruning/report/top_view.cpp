@@ -6,6 +6,7 @@
 #include <Eigen/Eigenvalues>
 
 #include "sfm_pruning/report/svg_builder.hpp"
+#include "sfm_pruning/util/option_checks.hpp"
 
 namespace sfm_pruning {
 namespace {
@@ -68,6 +69,7 @@ TopViewFrame TopViewFrameOf(const TopViewScene& scene) {
 }
 
 std::string DrawTopViewSvg(const TopViewScene& scene, const TopViewFrame& frame, const TopViewOptions& options) {
+  options.Check();
   const auto plane = [&](const Eigen::Vector3d& X) { return Eigen::Vector2d(frame.axis_x.dot(X), frame.axis_y.dot(X)); };
   const size_t stride = std::max<size_t>(1, (scene.points.size() + options.max_points - 1) / std::max<size_t>(1, options.max_points));
 
@@ -146,6 +148,19 @@ std::string DrawTopViewSvg(const TopViewScene& scene, const TopViewFrame& frame,
   }
   svg.EndGroup();
   return svg.Finish("topview", "top view of the cameras and points");
+}
+
+void TopViewOptions::Check() const {
+  // The drawing's size in SVG pixels: every position is computed from it.
+  if (!(width > 0.0 && std::isfinite(width))) {
+    option_checks_detail::Fail("TopViewOptions::width", "positive and finite", width);
+  }
+  if (!(height > 0.0 && std::isfinite(height))) {
+    option_checks_detail::Fail("TopViewOptions::height", "positive and finite", height);
+  }
+  // The subsample keeps at least one point whatever the cap, so 0 would not mean "none".
+  RequireAtLeast<size_t>(max_points, 1, "TopViewOptions::max_points");
+  RequireInRange(point_quantile, 0.0, 1.0, "TopViewOptions::point_quantile");
 }
 
 }  // namespace sfm_pruning

@@ -55,6 +55,9 @@ struct TopViewOptions {
   // The plotted extent covers the cameras and this central fraction of the points (per axis),
   // so a few far-away points do not shrink the scene to a dot.
   double point_quantile = 0.96;
+
+  // Throws std::invalid_argument naming the first field out of range (util/option_checks.hpp).
+  void Check() const;
 };
 
 std::string DrawTopViewSvg(const TopViewScene& scene, const TopViewFrame& frame, const TopViewOptions& options = {});

@@ -48,4 +48,9 @@ void RequireAtLeast(T value, T min, const std::string& field) {
   }
 }
 
+// Any number (NaN fails): for fields where every value, negative ones included, has a meaning.
+inline void RequireNumber(double value, const std::string& field) {
+  if (std::isnan(value)) option_checks_detail::Fail(field, "a number", value);
+}
+
 }  // namespace sfm_pruning

@@ -6,6 +6,7 @@
 #include <stdexcept>
 
 #include "sfm_pruning/sfm/pose.hpp"
+#include "sfm_pruning/util/option_checks.hpp"
 #include "sfm_pruning/view_graph/dense_node_index.hpp"
 
 namespace sfm_pruning {
@@ -148,6 +149,7 @@ void CollectShortestAlternatives(const DenseAdjacency& adjacency, const DenseNod
 }  // namespace
 
 CycleSearchResult FindBoundedCycles(const ViewGraph& graph, const CycleSearchOptions& options) {
+  options.Check();
   CycleCollector collector(options.max_num_cycles);
   if (options.max_cycle_length < 3) return collector.result();  // no simple cycle is shorter
   const DenseNodeIndex index(graph);
@@ -176,6 +178,12 @@ double LoopRotationErrorDeg(const ViewGraph& graph, const ViewCycle& cycle) {
 double LoopRotationThresholdDeg(size_t num_cameras, double step_deg) {
   if (num_cameras < 1) return 0.0;
   return step_deg * static_cast<double>((num_cameras - 1) / 2);
+}
+
+void CycleSearchOptions::Check() const {
+  // No simple cycle has fewer than 3 cameras; a cap of 0 would list none and report truncation.
+  RequireAtLeast<size_t>(max_cycle_length, 3, "CycleSearchOptions::max_cycle_length");
+  RequireAtLeast<size_t>(max_num_cycles, 1, "CycleSearchOptions::max_num_cycles");
 }
 
 }  // namespace sfm_pruning

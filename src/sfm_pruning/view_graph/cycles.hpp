@@ -35,6 +35,9 @@ struct CycleSearchOptions {
   size_t max_num_cycles = 100000;
   bool include_shortest_alternatives = true;  // step 1
   bool include_triangles = true;              // step 2
+
+  // Throws std::invalid_argument naming the first field out of range (util/option_checks.hpp).
+  void Check() const;
 };
 
 struct CycleSearchResult {

@@ -9,6 +9,7 @@
 #include <stdexcept>
 #include <string>
 
+#include "sfm_pruning/util/option_checks.hpp"
 #include "sfm_pruning/view_graph/dense_node_index.hpp"
 
 namespace sfm_pruning {
@@ -93,6 +94,7 @@ LouvainResult OneCommunityPerNode(const ViewGraph& graph) {
 }  // namespace
 
 LouvainResult DetectCommunitiesLouvain(const ViewGraph& graph, const LouvainOptions& options) {
+  options.Check();
   const std::vector<std::pair<ViewPair, double>> edges = WeightedValidEdges(graph);
   double total_weight = 0.0;
   for (const auto& [pair, weight] : edges) total_weight += weight;
@@ -153,6 +155,12 @@ LouvainResult DetectCommunitiesLouvain(const ViewGraph& graph, const LouvainOpti
   for (auto& [label, members] : by_label) result.communities.push_back(std::move(members));
   SortNodeGroups(&result.communities);
   return result;
+}
+
+void LouvainOptions::Check() const {
+  // igraph rejects a negative gamma and 0 ignores the degrees (one community per component); the
+  // upper bound is generous (far beyond it every node is a community of its own).
+  RequirePositiveAtMost(resolution, 1e6, "LouvainOptions::resolution");
 }
 
 }  // namespace sfm_pruning

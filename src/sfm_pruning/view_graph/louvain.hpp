@@ -22,6 +22,9 @@ struct LouvainOptions {
   double resolution = 1.0;
   // Seed of igraph's RNG (node visiting order). Same graph + same seed = same communities.
   uint64_t seed = 0;
+
+  // Throws std::invalid_argument naming the first field out of range (util/option_checks.hpp).
+  void Check() const;
 };
 
 struct LouvainResult {
