@@ -77,7 +77,7 @@ def main():
     parser = bs.argument_parser(__doc__, "/tmp/prunesfm-pruning-decisions")
     parser.add_argument("--scenes", default=",".join(DEFAULT_SCENES),
                         help="comma-separated LABEL[=SCENE[:SYNTH ARGS]] (as bench/oracle_pruning_bench.py)")
-    parser.add_argument("--run_args", default="", help="extra `prunesfm run` options, e.g. '--prune_model_audit true'")
+    parser.add_argument("--run_args", default="", help="extra `prunesfm run` options, e.g. '--prune_audit_enabled true'")
     parser.add_argument("--reuse", action="store_true", help="keep a scene already generated in the work folder")
     args = parser.parse_args()
     prunesfm = str(Path(args.prunesfm).resolve()) if args.prunesfm else str(rb.find_prunesfm(None))

@@ -27,12 +27,12 @@ import run_benchmarks as rb  # noqa: E402
 
 DEFAULT_VARIANTS = [
     "defaults=",
-    "the earlier defaults (inlier partition, triangle vote)=--prune_partition_weight inliers --prune_link_trust match_coverage "
-    "--prune_loop_method triangle_vote",
+    "the earlier defaults (inlier partition, triangle vote)=--prune_edge_weight inliers --prune_link_trust match_coverage "
+    "--prune_subgraph_loops_method triangle_vote",
 ]
 SYNTHETIC_VARIANTS = [
     "defaults=",
-    "street configuration=--positioning_tracks MATCH_STARS --max_epipolar_error_deg 0.08 --prune_model_audit true",
+    "street configuration=--positioning_tracks MATCH_STARS --max_epipolar_error_deg 0.08 --prune_audit_enabled true",
 ]
 
 

@@ -30,12 +30,13 @@ TEST(Cli, RunHelpFitsTwoScreensAndHelpAllListsEveryOption) {
   for (const char* shown : {"--engine", "--prune_preset", "--refine_intrinsics", "--database", "--num_threads"}) {
     EXPECT_NE(help.out.find(shown), std::string::npos) << shown;
   }
-  EXPECT_EQ(help.out.find("--prune_landmark_check_deg"), std::string::npos);
+  EXPECT_EQ(help.out.find("--prune_landmark_check_max_angle_deg"), std::string::npos);
   EXPECT_NE(help.out.find("expert options are not shown: --help_all lists them"), std::string::npos) << help.out;
 
   const CommandResult all = RunPrunesfm({"run", "--help_all"});
   EXPECT_EQ(all.exit_code, 0);
-  for (const char* expert : {"--prune_landmark_check_deg", "--flann_checks", "--refine_distortion", "--solver_threads"}) {
+  for (const char* expert : {"--prune_landmark_check_max_angle_deg", "--flann_checks", "--refine_distortion",
+                             "--solver_threads"}) {
     EXPECT_NE(all.out.find(expert), std::string::npos) << expert;
   }
   EXPECT_EQ(all.out.find("expert options are not shown"), std::string::npos);
@@ -68,15 +69,15 @@ TEST(Cli, PruneOffersTheModelAuditButNotHowTheFinalSolveStarts) {
   // solve starts from the audited model would be silently ignored.
   const CommandResult prune_help = RunPrunesfm({"prune", "--help_all"});
   EXPECT_EQ(prune_help.exit_code, 0);
-  EXPECT_NE(prune_help.out.find("--prune_model_audit"), std::string::npos);
-  EXPECT_NE(prune_help.out.find("--prune_landmark_check_deg"), std::string::npos);
+  EXPECT_NE(prune_help.out.find("--prune_audit_enabled"), std::string::npos);
+  EXPECT_NE(prune_help.out.find("--prune_landmark_check_max_angle_deg"), std::string::npos);
   const CommandResult prune = RunPrunesfm({"prune", "--database", "/nonexistent/database.db", "--output", "/tmp/x.db",
                                            "--prune_audit_refine_final", "true"});
   EXPECT_NE(prune.exit_code, 0);
   EXPECT_NE(prune.err.find("--prune_audit_refine_final"), std::string::npos) << prune.err;
   const CommandResult run = RunPrunesfm({"run", "--help_all"});
   EXPECT_EQ(run.exit_code, 0);
-  EXPECT_NE(run.out.find("--prune_model_audit"), std::string::npos);
+  EXPECT_NE(run.out.find("--prune_audit_enabled"), std::string::npos);
   EXPECT_NE(run.out.find("--prune_audit_refine_final"), std::string::npos);
 }
 

@@ -166,7 +166,8 @@ TEST(CliPruneEndToEnd, ReportListsEachViolationOfAnInconsistentCommunity) {
   // Weighted by raw inliers, Louvain groups views of the twin faces, and that community fails the
   // paper's angle tests (the baseline-ratio test, listed as factors, is the next test's).
   const nlohmann::json report = PruneOrbitReport(
-      "cli_prune_violations", {"--seed", "5", "--prune_partition_weight", "inliers", "--prune_baseline_ratio_factor", "0"});
+      "cli_prune_violations",
+      {"--seed", "5", "--prune_edge_weight", "inliers", "--prune_max_baseline_ratio_factor", "0"});
   size_t listed = 0;
   for (const nlohmann::json& node : report.at("tree")) {
     if (!node.contains("violation_list")) continue;
@@ -187,7 +188,8 @@ TEST(CliPruneEndToEnd, ReportListsEachViolationOfAnInconsistentCommunity) {
 
 TEST(CliPruneEndToEnd, ReportListsBaselineRatioViolationsAsFactorsOverThreeViews) {
   // A factor of 1.01 is below the depths' noise, so some community fails the test.
-  const nlohmann::json report = PruneOrbitReport("cli_prune_baseline_ratio", {"--prune_baseline_ratio_factor", "1.01"});
+  const nlohmann::json report =
+      PruneOrbitReport("cli_prune_baseline_ratio", {"--prune_max_baseline_ratio_factor", "1.01"});
   size_t listed = 0;
   for (const nlohmann::json& node : report.at("tree")) {
     if (!node.contains("violation_list")) continue;

@@ -80,11 +80,12 @@ TEST(CliPrune, PaperPresetIsEveryAdditionOffAndFlagsStillApply) {
   };
   const nlohmann::json preset = prune("preset", {"--prune_preset", "paper"});
   const nlohmann::json flags = prune(
-      "flags", {"--prune_partition_weight", "inliers", "--prune_bisect_unsplittable", "false",
-                "--prune_baseline_ratio_factor", "0", "--prune_max_sample_size", "0", "--prune_ransac_enumerate_max", "0",
-                "--prune_hypothesis_selection", "largest_consensus", "--prune_rotation_only_fallback", "false",
-                "--prune_subgraph_loops", "false", "--prune_trust_prior_edges", "0", "--prune_landmark_check_deg", "0",
-                "--prune_model_audit", "false"});
+      "flags", {"--prune_edge_weight", "inliers", "--prune_bisect_unsplittable", "false",
+                "--prune_max_baseline_ratio_factor", "0", "--prune_max_sample_size", "0",
+                "--prune_max_enumerated_samples", "0", "--prune_hypothesis_selection", "largest_consensus",
+                "--prune_rotation_only_fallback", "false", "--prune_subgraph_loops_enabled", "false",
+                "--prune_trust_prior_edges", "0", "--prune_landmark_check_max_angle_deg", "0",
+                "--prune_audit_enabled", "false"});
   // The same pruning (the tree differs only in its timings).
   EXPECT_EQ(preset.at("removed_edges"), flags.at("removed_edges"));
   EXPECT_EQ(preset.at("tree").size(), flags.at("tree").size());
@@ -100,7 +101,7 @@ TEST(CliPrune, PaperPresetIsEveryAdditionOffAndFlagsStillApply) {
   };
   EXPECT_EQ(stages(preset), (std::vector<std::string>{"subgraph partition", "inter-subgraph pruning"}));
   // A flag given with the preset wins, before or after it on the command line.
-  const nlohmann::json audited = prune("audited", {"--prune_model_audit", "true", "--prune_preset", "paper"});
+  const nlohmann::json audited = prune("audited", {"--prune_audit_enabled", "true", "--prune_preset", "paper"});
   EXPECT_EQ(stages(audited).back(), "model audit");
   const CommandResult unknown = RunPrunesfm(
       {"prune", "--database", database, "--output", (scratch / "x.db").string(), "--prune_preset", "mine"});

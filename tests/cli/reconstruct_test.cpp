@@ -160,12 +160,12 @@ TEST(CliReconstruct, ModelAuditAndLandmarkCheckLeaveACleanSceneAlone) {
   const CommandResult result = RunPrunesfm(
       {"run", "--database", (CleanProject() / "database.db").string(), "--image_path", (scratch / "images").string(),
        "--output_path", out.string(), "--engine", "GLOBAL_PRUNED",
-       "--prune_model_audit", "true", "--prune_landmark_check_deg", "5"});
+       "--prune_audit_enabled", "true", "--prune_landmark_check_max_angle_deg", "5"});
   ASSERT_EQ(result.exit_code, 0) << result.err;
   EXPECT_GE(Auc3(out / "sparse" / "0", scratch), 97.0);
   const nlohmann::json timings = nlohmann::json::parse(std::ifstream(out / "timings.json"));
-  EXPECT_TRUE(timings.at("prune_model_audit").get<bool>());
-  EXPECT_EQ(timings.at("prune_landmark_check_deg").get<double>(), 5.0);
+  EXPECT_TRUE(timings.at("prune_audit_enabled").get<bool>());
+  EXPECT_EQ(timings.at("prune_landmark_check_max_angle_deg").get<double>(), 5.0);
   const nlohmann::json report = nlohmann::json::parse(std::ifstream(out / "pruning_report.json"));
   const nlohmann::json& check = report.at("landmark_check");
   EXPECT_GT(check.at("edges").get<int>(), 0);
@@ -190,12 +190,12 @@ TEST(CliReconstruct, PruningRansacTriesEverySampleOfASmallPairOnce) {
     std::vector<std::string> args = {"run", "--database", (CleanProject() / "database.db").string(), "--image_path",
                                      (scratch / "images").string(), "--output_path", out.string(), "--engine",
                                      "GLOBAL_PRUNED"};
-    if (std::string(bound) == "0") args.insert(args.end(), {"--prune_ransac_enumerate_max", "0"});
+    if (std::string(bound) == "0") args.insert(args.end(), {"--prune_max_enumerated_samples", "0"});
     const CommandResult result = RunPrunesfm(args);
     ASSERT_EQ(result.exit_code, 0) << result.err;
     EXPECT_GE(Auc3(out / "sparse" / "0", scratch), 97.0) << bound;
     const nlohmann::json timings = nlohmann::json::parse(std::ifstream(out / "timings.json"));
-    EXPECT_EQ(timings.at("prune_ransac_enumerate_max").get<size_t>(), std::stoul(bound));
+    EXPECT_EQ(timings.at("prune_max_enumerated_samples").get<size_t>(), std::stoul(bound));
     const nlohmann::json report = nlohmann::json::parse(std::ifstream(out / "pruning_report.json"));
     int judged = 0;
     for (const nlohmann::json& pair : report.at("subgraph_pairs")) {

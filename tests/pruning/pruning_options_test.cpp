@@ -55,7 +55,7 @@ TEST(PruningOptions, EachStructNamesItsBadField) {
 
 TEST(PruningOptions, PruneViewGraphRefusesBadOptionsBeforeAnyWork) {
   ViewGraphPruningOptions options;
-  options.alignment.num_iterations = 0;
+  options.alignment.num_ransac_iterations = 0;
   ViewGraph graph;
   EXPECT_THROW(PruneViewGraph(options, &graph, SfmData(), FeaturesPerView(), nullptr), std::invalid_argument);
 }

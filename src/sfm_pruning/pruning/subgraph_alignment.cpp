@@ -115,7 +115,7 @@ std::optional<Candidate> RansacOverPool(const std::vector<ChainedRelativePose>& 
   const size_t n = pool.size();
   const size_t sample_size = SampleSize(n, options);
   if (result->sample_size == 0) result->sample_size = sample_size;
-  RansacSamples samples(n, sample_size, options.num_iterations, options.max_enumerated_samples, rng);
+  RansacSamples samples(n, sample_size, options.num_ransac_iterations, options.max_enumerated_samples, rng);
   std::optional<Candidate> best;
   for (int iteration = 0; iteration < samples.size(); ++iteration) {
     std::vector<size_t> sample = samples.Next();
@@ -415,7 +415,7 @@ SubgraphAlignmentResult AlignSubgraphPair(const ViewGraph& graph, const Subgraph
 
 void SubgraphAlignmentOptions::Check() const {
   placement.Check();
-  RequireInRange(num_iterations, 1, 1000000, "SubgraphAlignmentOptions::num_iterations");
+  RequireInRange(num_ransac_iterations, 1, 1000000, "SubgraphAlignmentOptions::num_ransac_iterations");
   RequirePositiveAtMost(sample_fraction, 1.0, "SubgraphAlignmentOptions::sample_fraction");
   // β* needs two edges (chained_relative_pose.hpp).
   RequireAtLeast<size_t>(min_sample_size, 2, "SubgraphAlignmentOptions::min_sample_size");

@@ -4,8 +4,8 @@
 //      (subgraph_edge_placement.hpp); edges that cannot be placed do not vote;
 //   2. each voting edge gives the chained relative pose c1 -> i -> j -> c2 between the mean
 //      poses, its translation affine in the scale β (chained_relative_pose.hpp);
-//   3. RANSAC, num_iterations rounds (or every distinct sample once when there are at most
-//      max_enumerated_samples): draw floor(sample_fraction · N) voting edges (at least
+//   3. RANSAC, num_ransac_iterations rounds (or every distinct sample once when there are at
+//      most max_enumerated_samples): draw floor(sample_fraction · N) voting edges (at least
 //      min_sample_size), fit β* and the sample means (rotation r̄, translation t̄), and count
 //      every voting edge with E_r ≤ max_rotation_deviation_deg and
 //      E_t = |t_e(β*) − t̄| ≤ max_translation_deviation_fraction · |t̄|. The largest consensus
@@ -35,13 +35,13 @@ namespace sfm_pruning {
 struct SubgraphAlignmentOptions {
   EdgePlacementOptions placement;
 
-  int num_iterations = 30;          // paper: 30 (ablation 20 / 40)
+  int num_ransac_iterations = 30;  // paper: 30 (ablation 20 / 40)
   double sample_fraction = 0.4;     // of the voting edges, rounded down
   size_t min_sample_size = 2;       // β needs two edges
   // A run whose pool has at most this many distinct samples tries each of them once instead of
-  // num_iterations random draws (not in the paper; ransac_samples.hpp): the search is complete and
-  // the decision no longer depends on the seed. 1000 covers pools of up to 45 edges at the sample
-  // of 2 (ViewGraphPruningOptions::max_sample_size). 0 = always the paper's random draws.
+  // num_ransac_iterations random draws (not in the paper; ransac_samples.hpp): the search is
+  // complete and the decision no longer depends on the seed. 1000 covers pools of up to 45 edges at
+  // the sample of 2 (ViewGraphPruningOptions::max_sample_size). 0 = always the paper's random draws.
   size_t max_enumerated_samples = 1000;
   double max_rotation_deviation_deg = 5.0;           // E_r
   double max_translation_deviation_fraction = 0.05;  // E_t / |t̄|

@@ -174,7 +174,7 @@ void RunPrune(const PruneArguments& args) {
        " pairs, " + std::to_string(graph.NumNodes()) + " views");
 
   // GLOBAL_PRUNED's pruning, all of it: the view-graph pruning with its landmark check and, unless
-  // --prune_model_audit false, the audit against a solve of the pruned graph.
+  // --prune_audit_enabled false, the audit against a solve of the pruned graph.
   sfm_pruning::ViewGraph pruned;
   sfm_pruning::SfmData audit_model;
   sfm_pruning::PrunedGlobalEngineReport engine_report;

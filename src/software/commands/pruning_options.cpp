@@ -20,21 +20,9 @@ const std::map<std::string, sfm_pruning::AuditModelSchedule>& AuditModelNames() 
   return names;
 }
 
-}  // namespace
-
-std::string AuditModelName(sfm_pruning::AuditModelSchedule schedule) {
-  for (const auto& [name, value] : AuditModelNames()) {
-    if (value == schedule) return name;
-  }
-  return "";
-}
-
-void AddPruningOptions(CLI::App* cmd, sfm_pruning::ViewGraphPruningOptions* options, bool final_solve) {
-  CLI::App* group = cmd->add_option_group(
-      "Pruning", "View-graph pruning (GLOBAL_PRUNED, prune): the paper's method with PruneSfM's additions "
-                 "(docs/pruning.md)");
-  // First in the group: CLI11 stores the options' values in the order they are defined, so the
-  // preset is applied before, and overridden by, any flag given with it.
+// First in the group: CLI11 stores the options' values in the order they are defined, so the
+// preset is applied before, and overridden by, any flag given with it.
+void AddPresetFlag(CLI::App* group, sfm_pruning::ViewGraphPruningOptions* options) {
   group->add_option_function<std::string>(
           "--prune_preset",
           [options](const std::string& preset) {
@@ -44,27 +32,26 @@ void AddPruningOptions(CLI::App* cmd, sfm_pruning::ViewGraphPruningOptions* opti
           "with it still apply)")
       ->check(CLI::IsMember({"default", "paper"}))
       ->default_str("default");
-  sfm_pruning::RecursivePartitionOptions& partition = options->partition;
-  sfm_pruning::ConsistencyTestOptions& consistency = partition.consistency;
-  sfm_pruning::SubgraphAlignmentOptions& alignment = options->alignment;
+}
 
-  // Subgraph partition.
-  group->add_option("--prune_recursive", partition.recursive,
+// Subgraph partition.
+void AddPartitionFlags(CLI::App* group, sfm_pruning::RecursivePartitionOptions* partition) {
+  group->add_option("--prune_recursive", partition->recursive,
                     "Partition inconsistent communities again (false: one Louvain pass, ablation)")
       ->capture_default_str();
-  group->add_option("--prune_max_depth", partition.max_depth, "Depth at which communities are no longer split")
+  group->add_option("--prune_max_depth", partition->max_depth, "Depth at which communities are no longer split")
       ->check(NonNegativeValue())
       ->capture_default_str();
-  group->add_option("--prune_louvain_resolution", partition.louvain.resolution,
+  group->add_option("--prune_louvain_resolution", partition->louvain.resolution,
                     "Modularity resolution gamma of Louvain (1 = classic modularity)")
       ->check(PositiveValue())
       ->capture_default_str();
-  group->add_option("--prune_bisect_unsplittable", partition.bisect_unsplittable,
+  group->add_option("--prune_bisect_unsplittable", partition->bisect_unsplittable,
                     "Cut an inconsistent community that Louvain returns whole in two by spectral bisection "
                     "instead of accepting it (not in the paper; docs/pruning.md)")
       ->capture_default_str();
   using EdgeWeight = sfm_pruning::RecursivePartitionOptions::EdgeWeight;
-  group->add_option("--prune_partition_weight", partition.edge_weight,
+  group->add_option("--prune_edge_weight", partition->edge_weight,
                     "Edge similarity of the Louvain partition. inliers: the paper's inlier count; distinctive: "
                     "each inlier weighs 1/(views its features match in), so repeated structure seen by every "
                     "view counts little (docs/pruning.md)")
@@ -73,56 +60,61 @@ void AddPruningOptions(CLI::App* cmd, sfm_pruning::ViewGraphPruningOptions* opti
                                             {"distinctive", EdgeWeight::kDistinctiveMatches}},
           CLI::ignore_case))
       ->default_str("distinctive");
+}
 
-  // Consistency tests of a community's solution.
-  group->add_option("--prune_loop_test", consistency.test_loops, "Loop rotation consistency test on/off")
+// Consistency tests of a community's solution.
+void AddConsistencyTestFlags(CLI::App* group, sfm_pruning::ConsistencyTestOptions* consistency) {
+  group->add_option("--prune_test_loops", consistency->test_loops, "Loop rotation consistency test on/off")
       ->capture_default_str();
-  group->add_option("--prune_relative_rotation_test", consistency.test_relative_rotation,
+  group->add_option("--prune_test_relative_rotation", consistency->test_relative_rotation,
                     "Relative-to-absolute rotation test (e_r) on/off")
       ->capture_default_str();
-  group->add_option("--prune_relative_translation_test", consistency.test_relative_translation,
+  group->add_option("--prune_test_relative_translation", consistency->test_relative_translation,
                     "Translation direction test (e_t) on/off")
       ->capture_default_str();
-  group->add_option("--prune_baseline_ratio_factor", consistency.max_baseline_ratio_factor,
+  group->add_option("--prune_max_baseline_ratio_factor", consistency->max_baseline_ratio_factor,
                     "Baseline-ratio test (not in the paper): two edges of a view that triangulate the same "
                     "features measure the ratio of their baselines; a community fails when its solution's ratio "
                     "differs by more than this factor (0: off; docs/pruning.md)")
       ->check(NonNegativeValue())
       ->capture_default_str();
-  group->add_option("--prune_loop_step_deg", consistency.loop_step_deg,
+  group->add_option("--prune_loop_step_deg", consistency->loop_step_deg,
                     "A loop of l cameras may deviate by this * floor((l-1)/2) degrees")
       ->check(PositiveValue())
       ->capture_default_str();
-  group->add_option("--prune_max_loop_length", consistency.cycles.max_cycle_length,
+  group->add_option("--prune_max_cycle_length", consistency->cycles.max_cycle_length,
                     "Longest loop tested, in cameras (paper: fewer than 8)")
       ->check(RangeValue(3, 64))
       ->capture_default_str();
-  group->add_option("--prune_max_relative_rotation_error_deg", consistency.max_relative_rotation_error_deg,
+  group->add_option("--prune_max_relative_rotation_error_deg", consistency->max_relative_rotation_error_deg,
                     "e_r threshold")
       ->check(PositiveValue())
       ->capture_default_str();
-  group->add_option("--prune_max_relative_translation_error_deg", consistency.max_relative_translation_error_deg,
+  group->add_option("--prune_max_relative_translation_error_deg", consistency->max_relative_translation_error_deg,
                     "e_t threshold")
       ->check(PositiveValue())
       ->capture_default_str();
+}
 
-  // Inter-subgraph RANSAC.
-  group->add_option("--prune_ransac_iterations", alignment.num_iterations,
+// Inter-subgraph RANSAC.
+void AddAlignmentFlags(CLI::App* group, sfm_pruning::ViewGraphPruningOptions* options) {
+  sfm_pruning::SubgraphAlignmentOptions* alignment = &options->alignment;
+  group->add_option("--prune_num_ransac_iterations", alignment->num_ransac_iterations,
                     "RANSAC rounds per pair of subgraphs (paper ablation: 20 / 30 / 40)")
       ->check(PositiveValue())
       ->capture_default_str();
-  group->add_option("--prune_ransac_enumerate_max", alignment.max_enumerated_samples,
+  group->add_option("--prune_max_enumerated_samples", alignment->max_enumerated_samples,
                     "A pair whose RANSAC pool has at most this many distinct samples tries each once instead of "
                     "the random rounds (complete, seed-independent); 0: always the paper's random rounds")
       ->capture_default_str();
-  group->add_option("--prune_sample_fraction", alignment.sample_fraction,
+  group->add_option("--prune_sample_fraction", alignment->sample_fraction,
                     "Fraction of the connecting edges drawn per RANSAC round")
       ->check(RangeValue(0.0, 1.0))
       ->capture_default_str();
   group->add_option("--prune_max_sample_size", options->max_sample_size,
                     "Cap on the RANSAC sample of a pair (0: no cap, the plain fraction)")
       ->capture_default_str();
-  group->add_option("--prune_hypothesis_selection", alignment.hypothesis_selection,
+  group->add_option("--prune_hypothesis_selection", alignment->hypothesis_selection,
                     "largest_consensus: the paper's vote; match_coverage: rule out RANSAC candidates whose "
                     "edges miss the landmarks their placed views should see (docs/pruning.md)")
       ->transform(CLI::CheckedTransformer(
@@ -131,88 +123,90 @@ void AddPruningOptions(CLI::App* cmd, sfm_pruning::ViewGraphPruningOptions* opti
               {"match_coverage", sfm_pruning::SubgraphAlignmentOptions::HypothesisSelection::kMatchCoverage}},
           CLI::ignore_case))
       ->default_str("match_coverage");
-  group->add_option("--prune_coverage_break_even", alignment.coverage_break_even,
+  group->add_option("--prune_coverage_break_even", alignment->coverage_break_even,
                     "match_coverage: a candidate whose edges match fewer than this fraction of the landmarks "
                     "they should see is ruled out")
       ->check(RangeValue(0.0, 1.0))
       ->capture_default_str();
-  group->add_option("--prune_relative_coverage_break_even", alignment.relative_coverage_break_even,
+  group->add_option("--prune_relative_coverage_break_even", alignment->relative_coverage_break_even,
                     "match_coverage, when every candidate is below the break-even: rule out those whose "
                     "coverage is below this fraction of the pair's best (0: the largest wins)")
       ->check(RangeValue(0.0, 1.0))
       ->capture_default_str();
-  group->add_option("--prune_max_rotation_deviation_deg", alignment.max_rotation_deviation_deg,
+  group->add_option("--prune_max_rotation_deviation_deg", alignment->max_rotation_deviation_deg,
                     "E_r: rotation deviation of an edge from the RANSAC hypothesis")
       ->check(PositiveValue())
       ->capture_default_str();
-  group->add_option("--prune_max_translation_deviation", alignment.max_translation_deviation_fraction,
+  group->add_option("--prune_max_translation_deviation_fraction", alignment->max_translation_deviation_fraction,
                     "E_t: translation deviation of an edge as a fraction of |mean t|")
       ->check(PositiveValue())
       ->capture_default_str();
-  group->add_option("--prune_min_edges_for_ransac", alignment.min_edges_for_ransac,
+  group->add_option("--prune_min_edges_for_ransac", alignment->min_edges_for_ransac,
                     "Subgraph pairs with fewer voting edges keep or lose them all (few-edges policy) instead of "
                     "being aligned")
       ->check(RangeValue(2, 1000000))
       ->capture_default_str();
-  group->add_option("--prune_rotation_only_fallback", alignment.rotation_only_fallback,
+  group->add_option("--prune_rotation_only_fallback", alignment->rotation_only_fallback,
                     "A pair without a supported hypothesis keeps only the largest set of edges that agree on "
                     "the rotation between the subgraphs (false: all its voting edges, the paper)")
       ->capture_default_str();
+}
 
-  // The model's audit of the pruning (not in the paper; docs/pruning.md).
-  sfm_pruning::ModelEdgeAuditOptions& audit = options->audit;
-  group->add_option("--prune_model_audit", audit.enabled,
+// The model's audit of the pruning (not in the paper; docs/pruning.md).
+void AddAuditFlags(CLI::App* group, sfm_pruning::ModelEdgeAuditOptions* audit, bool final_solve) {
+  group->add_option("--prune_audit_enabled", audit->enabled,
                     "GLOBAL_PRUNED: judge the edges between subgraphs against the model solved from the pruned "
                     "graph (re-admit removed edges whose matches it transfers, remove kept ones it does not), "
                     "then adjust the audited graph from that model")
       ->capture_default_str();
-  group->add_option("--prune_audit_model", audit.model_schedule,
+  group->add_option("--prune_audit_model_schedule", audit->model_schedule,
                     "Model audit: the solve it judges from. positioned: rotation averaging and positioning; "
                     "adjusted: + one bundle adjustment on a subset of the landmarks; full: the final solve's "
                     "schedule")
       ->transform(CLI::CheckedTransformer(AuditModelNames(), CLI::ignore_case))
       ->default_str("adjusted");
   if (final_solve) {  // `prune` stops after the audit: there is no final solve to start
-    group->add_option("--prune_audit_refine_final", audit.refine_final,
+    group->add_option("--prune_audit_refine_final", audit->refine_final,
                       "Model audit: the final solve starts from the audited model's poses (its tracks "
                       "re-triangulated, then adjusted) instead of solving the audited graph from scratch")
         ->capture_default_str();
   }
-  group->add_option("--prune_audit_max_error_px", audit.max_transfer_error_px,
+  group->add_option("--prune_audit_max_transfer_error_px", audit->max_transfer_error_px,
                     "Model audit: a match agrees when its landmark projects within this many pixels of the other "
                     "feature")
       ->check(PositiveValue())
       ->capture_default_str();
-  group->add_option("--prune_audit_readmit_agreement", audit.readmit_agreement,
+  group->add_option("--prune_audit_readmit_agreement", audit->readmit_agreement,
                     "Model audit: a removed edge is re-admitted when at least this share of its transferred "
                     "matches agree")
       ->check(RangeValue(0.0, 1.0))
       ->capture_default_str();
-  group->add_option("--prune_audit_keep_agreement", audit.keep_agreement,
+  group->add_option("--prune_audit_keep_agreement", audit->keep_agreement,
                     "Model audit: a kept edge is removed when less than this share of its transferred matches "
                     "agree")
       ->check(RangeValue(0.0, 1.0))
       ->capture_default_str();
+}
 
-  // Loops of subgraph pairs (not in the paper; docs/pruning.md).
-  sfm_pruning::SubgraphLoopOptions& loops = options->loops;
-  group->add_option("--prune_subgraph_loops", loops.enabled,
+// Loops of subgraph pairs (not in the paper; docs/pruning.md).
+void AddSubgraphLoopFlags(CLI::App* group, sfm_pruning::SubgraphLoopOptions* loops) {
+  group->add_option("--prune_subgraph_loops_enabled", loops->enabled,
                     "Cut the pairs of subgraphs whose frame transform breaks more subgraph triangles than it closes")
       ->capture_default_str();
-  group->add_option("--prune_loop_max_rotation_deg", loops.max_rotation_deg,
+  group->add_option("--prune_subgraph_loops_max_rotation_deg", loops->max_rotation_deg,
                     "Subgraph triangle: largest rotation of the composed frame transforms")
       ->check(PositiveValue())
       ->capture_default_str();
-  group->add_option("--prune_loop_max_translation", loops.max_translation_fraction,
+  group->add_option("--prune_subgraph_loops_max_translation_fraction", loops->max_translation_fraction,
                     "Subgraph triangle: largest displacement, as a fraction of the triangle's mean side")
       ->check(PositiveValue())
       ->capture_default_str();
-  group->add_option("--prune_loop_max_scale_ratio", loops.max_scale_ratio,
+  group->add_option("--prune_subgraph_loops_max_scale_ratio", loops->max_scale_ratio,
                     "Subgraph triangle: largest scale change of the composed frame transforms")
       ->check(RangeValue(1.0, 1e9))
       ->capture_default_str();
   using LoopMethod = sfm_pruning::SubgraphLoopOptions::Method;
-  group->add_option("--prune_loop_method", loops.method,
+  group->add_option("--prune_subgraph_loops_method", loops->method,
                     "triangle_vote: cut pairs breaking more subgraph triangles than they close, then longer "
                     "cycles; trusted_forest: the most trusted spanning forest of pairs is right, every other "
                     "pair must close its cycle with it (docs/pruning.md)")
@@ -220,23 +214,31 @@ void AddPruningOptions(CLI::App* cmd, sfm_pruning::ViewGraphPruningOptions* opti
                                                                             {"trusted_forest", LoopMethod::kTrustedForest}},
                                           CLI::ignore_case))
       ->default_str("trusted_forest");
-  group->add_option("--prune_min_unverified_trust", loops.min_unverified_trust,
+  group->add_option("--prune_subgraph_loops_min_unverified_trust", loops->min_unverified_trust,
                     "trusted_forest: a redundant subgraph pair that no cycle can verify is kept when its trust "
                     "reaches this (1: as distinctive as the edges inside the subgraphs)")
       ->check(NonNegativeValue())
       ->capture_default_str();
-  group->add_option("--prune_min_unverified_coverage", loops.min_unverified_coverage,
+  group->add_option("--prune_subgraph_loops_min_unverified_coverage", loops->min_unverified_coverage,
                     "trusted_forest: such a pair must also reach this match coverage, relative to the edges "
                     "inside the subgraphs (when it can be measured)")
       ->check(NonNegativeValue())
       ->capture_default_str();
-  group->add_option("--prune_landmark_check_deg", options->landmark_check.max_angle_deg,
+}
+
+// The landmark check of the matches between aligned subgraphs (not in the paper; docs/pruning.md).
+void AddLandmarkCheckFlags(CLI::App* group, sfm_pruning::LandmarkMatchCheckOptions* landmark_check) {
+  group->add_option("--prune_landmark_check_max_angle_deg", landmark_check->max_angle_deg,
                     "Each kept edge between two aligned subgraphs drops the matches whose landmark, carried into "
                     "the other subgraph by the pair's transform, misses the other feature's ray by more than this "
                     "(degrees; 0: off, the paper). Removes repeated-texture matches inside true pairs")
       ->check(RangeValue(0.0, 90.0))
       ->capture_default_str();
-  group->add_option("--prune_min_edges_for_trust", loops.min_edges_for_trust,
+}
+
+// What ranks the subgraph pairs of the loop check, and the longer cycles it judges.
+void AddPairTrustFlags(CLI::App* group, sfm_pruning::ViewGraphPruningOptions* options) {
+  group->add_option("--prune_subgraph_loops_min_edges_for_trust", options->loops.min_edges_for_trust,
                     "trusted_forest: subgraph pairs of fewer connecting edges are ranked after all the others")
       ->capture_default_str();
   using LinkTrust = sfm_pruning::PairTrustMeasure;
@@ -254,10 +256,35 @@ void AddPruningOptions(CLI::App* cmd, sfm_pruning::ViewGraphPruningOptions* opti
                     "consensus (0: off; docs/pruning.md)")
       ->check(NonNegativeValue())
       ->capture_default_str();
-  group->add_option("--prune_loop_max_cycle_length", loops.max_cycle_length,
+  group->add_option("--prune_subgraph_loops_max_cycle_length", options->loops.max_cycle_length,
                     "Longest cycle of subgraphs the second loop pass judges (below 4: off); on a broken "
                     "cycle the least trusted pair is cut")
       ->capture_default_str();
+}
+
+}  // namespace
+
+std::string AuditModelName(sfm_pruning::AuditModelSchedule schedule) {
+  for (const auto& [name, value] : AuditModelNames()) {
+    if (value == schedule) return name;
+  }
+  return "";
+}
+
+void AddPruningOptions(CLI::App* cmd, sfm_pruning::ViewGraphPruningOptions* options, bool final_solve) {
+  CLI::App* group = cmd->add_option_group(
+      "Pruning", "View-graph pruning (GLOBAL_PRUNED, prune): the paper's method with PruneSfM's additions "
+                 "(docs/pruning.md)");
+  AddPresetFlag(group, options);
+  AddPartitionFlags(group, &options->partition);
+  AddConsistencyTestFlags(group, &options->partition.consistency);
+  AddAlignmentFlags(group, options);
+  AddAuditFlags(group, &options->audit, final_solve);
+  // The landmark check's flag keeps its place in --help_all, between the loop check's and the pair
+  // ranking's.
+  AddSubgraphLoopFlags(group, &options->loops);
+  AddLandmarkCheckFlags(group, &options->landmark_check);
+  AddPairTrustFlags(group, options);
   // The preset is the one choice most runs make; every other pruning flag studies or adjusts the
   // method, and `--help` lists them only under --help_all.
   for (CLI::Option* option : group->get_options()) {

@@ -18,7 +18,7 @@ namespace prunesfm {
 // option of how that solve starts from the audit's model applies; `prune` stops after the audit.
 void AddPruningOptions(CLI::App* cmd, sfm_pruning::ViewGraphPruningOptions* options, bool final_solve);
 
-// The --prune_audit_model name of a schedule (for the run's record of its settings).
+// The --prune_audit_model_schedule name of a schedule (for the run's record of its settings).
 std::string AuditModelName(sfm_pruning::AuditModelSchedule schedule);
 
 }  // namespace prunesfm

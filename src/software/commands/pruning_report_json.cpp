@@ -37,22 +37,41 @@ nlohmann::json ViolationsJson(const std::vector<sfm_pruning::ConsistencyViolatio
   return list;
 }
 
-}  // namespace
+nlohmann::json ErrorSummaryJson(const sfm_pruning::ErrorSummary& s) {
+  return nlohmann::json{{"count", s.count}, {"max_deg", s.max_deg}, {"median_deg", s.median_deg}};
+}
 
-nlohmann::json PruningReportJson(const sfm_pruning::ViewGraphPruningReport& pruning) {
-  using namespace sfm_pruning;
-  const auto summary = [](const ErrorSummary& s) {
-    return nlohmann::json{{"count", s.count}, {"max_deg", s.max_deg}, {"median_deg", s.median_deg}};
-  };
+// The consistency tests' outcome on a tested node, added to its entry.
+void AddConsistencyJson(const sfm_pruning::ConsistencyReport& consistency, nlohmann::json* entry) {
+  using sfm_pruning::ConsistencyTest;
+  // Every test's count, zeros included (baseline_ratio is 0 when the test is off).
+  std::map<std::string, size_t> counts;
+  for (const ConsistencyTest test : {ConsistencyTest::kLoop, ConsistencyTest::kRelativeRotation,
+                                     ConsistencyTest::kRelativeTranslation, ConsistencyTest::kBaselineRatio}) {
+    counts[sfm_pruning::ConsistencyTestName(test)] = 0;
+  }
+  for (const sfm_pruning::ConsistencyViolation& v : consistency.violations) {
+    ++counts[sfm_pruning::ConsistencyTestName(v.test)];
+  }
+  (*entry)["consistent"] = consistency.consistent;
+  (*entry)["violations"] = std::move(counts);
+  (*entry)["violation_list"] = ViolationsJson(consistency.violations);
+  (*entry)["loop_error"] = ErrorSummaryJson(consistency.loop_error);
+  (*entry)["relative_rotation_error"] = ErrorSummaryJson(consistency.relative_rotation_error);
+  (*entry)["relative_translation_error"] = ErrorSummaryJson(consistency.relative_translation_error);
+}
+
+// "tree": every node of the recursive partition.
+nlohmann::json TreeJson(const sfm_pruning::RecursivePartitionResult& partition) {
   nlohmann::json nodes = nlohmann::json::array();
-  for (size_t i = 0; i < pruning.partition.nodes.size(); ++i) {
-    const SubgraphNode& node = pruning.partition.nodes[i];
+  for (size_t i = 0; i < partition.nodes.size(); ++i) {
+    const sfm_pruning::SubgraphNode& node = partition.nodes[i];
     nlohmann::json entry = {{"id", i},
                             {"parent", node.parent},
                             {"depth", node.depth},
                             {"size", node.view_ids.size()},
                             {"edges", node.num_edges},
-                            {"status", SubgraphStatusName(node.status)},
+                            {"status", sfm_pruning::SubgraphStatusName(node.status)},
                             {"children", node.children},
                             {"accepted_index", node.accepted_index},
                             {"seconds", node.seconds}};
@@ -63,117 +82,137 @@ nlohmann::json PruningReportJson(const sfm_pruning::ViewGraphPruningReport& prun
       entry["registered"] = node.num_registered;
       entry["landmarks"] = node.num_landmarks;
     }
-    if (node.consistency_tested) {
-      // Every test's count, zeros included (baseline_ratio is 0 when the test is off).
-      std::map<std::string, size_t> counts;
-      for (const ConsistencyTest test : {ConsistencyTest::kLoop, ConsistencyTest::kRelativeRotation,
-                                         ConsistencyTest::kRelativeTranslation, ConsistencyTest::kBaselineRatio}) {
-        counts[ConsistencyTestName(test)] = 0;
-      }
-      for (const ConsistencyViolation& v : node.consistency.violations) ++counts[ConsistencyTestName(v.test)];
-      entry["consistent"] = node.consistency.consistent;
-      entry["violations"] = std::move(counts);
-      entry["violation_list"] = ViolationsJson(node.consistency.violations);
-      entry["loop_error"] = summary(node.consistency.loop_error);
-      entry["relative_rotation_error"] = summary(node.consistency.relative_rotation_error);
-      entry["relative_translation_error"] = summary(node.consistency.relative_translation_error);
-    }
+    if (node.consistency_tested) AddConsistencyJson(node.consistency, &entry);
     entry["view_ids"] = node.view_ids;
     nodes.push_back(std::move(entry));
   }
-  nlohmann::json pairs = nlohmann::json::array();
-  for (const SubgraphPairReport& pair : pruning.pairs) {
-    nlohmann::json hypotheses = nlohmann::json::array();
-    for (const AlignmentHypothesis& h : pair.hypotheses) {
-      hypotheses.push_back({{"consensus_edges", h.consensus_size},
-                            {"beta", h.beta},
-                            {"expected_landmarks", h.expected_landmarks},
-                            {"matched_landmarks", h.matched_landmarks},
-                            {"coverage_score", h.coverage_score},
-                            {"ruled_out", h.ruled_out},
-                            {"samples", h.num_samples},
-                            {"enumerated", h.enumerated}});
-    }
-    pairs.push_back({{"hypotheses", std::move(hypotheses)},
-                     {"selected_hypothesis", pair.selected_hypothesis},
-                     {"k1", pair.k1},
-                     {"k2", pair.k2},
-                     {"status", SubgraphAlignmentStatusName(pair.status)},
-                     {"edges", pair.num_edges},
-                     {"voting_edges", pair.num_voting_edges},
-                     {"removed_edges", pair.num_removed_edges},
-                     {"beta", pair.beta},
-                     {"consistent_triangles", pair.consistent_triangles},
-                     {"inconsistent_triangles", pair.inconsistent_triangles},
-                     {"rejected_by_loops", pair.rejected_by_loops},
-                     {"rejected_by_cycle", pair.rejected_by_cycle},
-                     {"trust", pair.trust},
-                     {"coverage", pair.coverage}});
-    if (pair.judged_by_forest) {
-      pairs.back()["forest_decision"] = LinkDecisionName(pair.forest_decision);
-    }
-    if (pair.has_frame_transform) {
-      pairs.back()["frame_rotation_deg"] =
-          RadToDeg(RotationAngleBetween(pair.k2_to_k1.rotation, Eigen::Matrix3d::Identity()));
-    }
+  return nodes;
+}
+
+// A JSON array of `element(item)` for each item, in order.
+template <typename T, typename ElementJson>
+nlohmann::json ArrayJson(const std::vector<T>& items, ElementJson element) {
+  nlohmann::json list = nlohmann::json::array();
+  for (const T& item : items) list.push_back(element(item));
+  return list;
+}
+
+// One RANSAC candidate of a subgraph pair.
+nlohmann::json HypothesisJson(const sfm_pruning::AlignmentHypothesis& h) {
+  return {{"consensus_edges", h.consensus_size},
+          {"beta", h.beta},
+          {"expected_landmarks", h.expected_landmarks},
+          {"matched_landmarks", h.matched_landmarks},
+          {"coverage_score", h.coverage_score},
+          {"ruled_out", h.ruled_out},
+          {"samples", h.num_samples},
+          {"enumerated", h.enumerated}};
+}
+
+// "subgraph_pairs": a connected pair's alignment, loop check and trust.
+nlohmann::json SubgraphPairJson(const sfm_pruning::SubgraphPairReport& pair) {
+  using namespace sfm_pruning;
+  nlohmann::json entry = {{"hypotheses", ArrayJson(pair.hypotheses, HypothesisJson)},
+                          {"selected_hypothesis", pair.selected_hypothesis},
+                          {"k1", pair.k1},
+                          {"k2", pair.k2},
+                          {"status", SubgraphAlignmentStatusName(pair.status)},
+                          {"edges", pair.num_edges},
+                          {"voting_edges", pair.num_voting_edges},
+                          {"removed_edges", pair.num_removed_edges},
+                          {"beta", pair.beta},
+                          {"consistent_triangles", pair.consistent_triangles},
+                          {"inconsistent_triangles", pair.inconsistent_triangles},
+                          {"rejected_by_loops", pair.rejected_by_loops},
+                          {"rejected_by_cycle", pair.rejected_by_cycle},
+                          {"trust", pair.trust},
+                          {"coverage", pair.coverage}};
+  if (pair.judged_by_forest) {
+    entry["forest_decision"] = LinkDecisionName(pair.forest_decision);
   }
-  nlohmann::json triangles = nlohmann::json::array();
-  for (const SubgraphTriangle& triangle : pruning.triangles) {
-    triangles.push_back({{"subgraphs", {triangle.a, triangle.b, triangle.c}},
-                         {"rotation_deg", triangle.rotation_deg},
-                         {"scale_ratio", triangle.scale_ratio},
-                         {"translation_fraction", triangle.translation_fraction},
-                         {"consistent", triangle.consistent}});
+  if (pair.has_frame_transform) {
+    entry["frame_rotation_deg"] =
+        RadToDeg(RotationAngleBetween(pair.k2_to_k1.rotation, Eigen::Matrix3d::Identity()));
   }
-  nlohmann::json cycles = nlohmann::json::array();
-  for (const SubgraphCycle& cycle : pruning.cycles) {
-    cycles.push_back({{"subgraphs", cycle.subgraphs},
-                      {"rotation_deg", cycle.rotation_deg},
-                      {"scale_ratio", cycle.scale_ratio},
-                      {"translation_fraction", cycle.translation_fraction},
-                      {"loop_factor", cycle.loop_factor},
-                      {"consistent", cycle.consistent}});
-  }
-  nlohmann::json removed = nlohmann::json::array();
-  for (const RemovedEdge& edge : pruning.removed_edges) {
-    removed.push_back({{"pair", ViewPairJson(edge.pair)},
-                       {"k1", edge.k1},
-                       {"k2", edge.k2},
-                       {"verdict", InterSubgraphVerdictName(edge.verdict)},
-                       {"reason", EdgeInvalidReasonName(edge.invalidation.reason)},
-                       {"value", edge.invalidation.value},
-                       {"threshold", edge.invalidation.threshold},
-                       {"measure", EdgeMeasureName(edge.invalidation.Measure())}});
-  }
-  nlohmann::json audit = nlohmann::json::array();
-  for (const EdgeAgreement& agreement : pruning.audit) {
-    audit.push_back({{"pair", ViewPairJson(agreement.pair)},
-                     {"transferred", agreement.transferred},
-                     {"agreeing", agreement.agreeing}});
-  }
-  nlohmann::json phases = nlohmann::json::array();
-  for (const StageTiming& timing : pruning.timings) phases.push_back({{"stage", timing.stage}, {"seconds", timing.seconds}});
+  return entry;
+}
+
+// "subgraph_triangles": a loop of aligned pairs.
+nlohmann::json SubgraphTriangleJson(const sfm_pruning::SubgraphTriangle& triangle) {
+  return {{"subgraphs", {triangle.a, triangle.b, triangle.c}},
+          {"rotation_deg", triangle.rotation_deg},
+          {"scale_ratio", triangle.scale_ratio},
+          {"translation_fraction", triangle.translation_fraction},
+          {"consistent", triangle.consistent}};
+}
+
+// "subgraph_cycles": a longer cycle judged.
+nlohmann::json SubgraphCycleJson(const sfm_pruning::SubgraphCycle& cycle) {
+  return {{"subgraphs", cycle.subgraphs},
+          {"rotation_deg", cycle.rotation_deg},
+          {"scale_ratio", cycle.scale_ratio},
+          {"translation_fraction", cycle.translation_fraction},
+          {"loop_factor", cycle.loop_factor},
+          {"consistent", cycle.consistent}};
+}
+
+// "removed_edges": a removed edge with its reason and measured error.
+nlohmann::json RemovedEdgeJson(const sfm_pruning::RemovedEdge& edge) {
+  using namespace sfm_pruning;
+  return {{"pair", ViewPairJson(edge.pair)},
+          {"k1", edge.k1},
+          {"k2", edge.k2},
+          {"verdict", InterSubgraphVerdictName(edge.verdict)},
+          {"reason", EdgeInvalidReasonName(edge.invalidation.reason)},
+          {"value", edge.invalidation.value},
+          {"threshold", edge.invalidation.threshold},
+          {"measure", EdgeMeasureName(edge.invalidation.Measure())}};
+}
+
+// "landmark_check": the counts of the landmark check of the matches between aligned subgraphs.
+nlohmann::json LandmarkCheckJson(const sfm_pruning::LandmarkMatchCheckReport& check) {
+  return {{"edges", check.num_edges},
+          {"matches", check.num_matches},
+          {"tested", check.num_tested},
+          {"dropped", check.num_dropped},
+          {"edges_removed", check.emptied.size()}};
+}
+
+// "model_audit": every judged edge and what changed.
+nlohmann::json ModelAuditJson(const sfm_pruning::ViewGraphPruningReport& pruning) {
+  const auto agreement_json = [](const sfm_pruning::EdgeAgreement& agreement) {
+    return nlohmann::json{{"pair", ViewPairJson(agreement.pair)},
+                          {"transferred", agreement.transferred},
+                          {"agreeing", agreement.agreeing}};
+  };
+  return {{"edges", ArrayJson(pruning.audit, agreement_json)},
+          {"readmitted", pruning.audit_readmitted},
+          {"removed", pruning.audit_removed}};
+}
+
+// "phases": the time of each stage.
+nlohmann::json StageTimingJson(const sfm_pruning::StageTiming& timing) {
+  return {{"stage", timing.stage}, {"seconds", timing.seconds}};
+}
+
+}  // namespace
+
+nlohmann::json PruningReportJson(const sfm_pruning::ViewGraphPruningReport& pruning) {
   return {{"edges_in", pruning.num_input_edges},
           {"edges_out", pruning.num_output_edges},
           {"num_subgraphs", pruning.partition.accepted.size()},
           {"engine_runs", pruning.partition.num_engine_runs},
-          {"phases", std::move(phases)},
+          {"phases", ArrayJson(pruning.timings, StageTimingJson)},
           {"total_seconds", pruning.total_seconds},
           {"reference_distinctive_share", pruning.reference_distinctive_share},
           {"reference_coverage", pruning.reference_coverage},
-          {"tree", std::move(nodes)},
-          {"subgraph_pairs", std::move(pairs)},
-          {"subgraph_triangles", std::move(triangles)},
-          {"subgraph_cycles", std::move(cycles)},
-          {"removed_edges", std::move(removed)},
-          {"landmark_check", {{"edges", pruning.landmark_check.num_edges},
-                              {"matches", pruning.landmark_check.num_matches},
-                              {"tested", pruning.landmark_check.num_tested},
-                              {"dropped", pruning.landmark_check.num_dropped},
-                              {"edges_removed", pruning.landmark_check.emptied.size()}}},
-          {"model_audit", {{"edges", std::move(audit)},
-                           {"readmitted", pruning.audit_readmitted},
-                           {"removed", pruning.audit_removed}}}};
+          {"tree", TreeJson(pruning.partition)},
+          {"subgraph_pairs", ArrayJson(pruning.pairs, SubgraphPairJson)},
+          {"subgraph_triangles", ArrayJson(pruning.triangles, SubgraphTriangleJson)},
+          {"subgraph_cycles", ArrayJson(pruning.cycles, SubgraphCycleJson)},
+          {"removed_edges", ArrayJson(pruning.removed_edges, RemovedEdgeJson)},
+          {"landmark_check", LandmarkCheckJson(pruning.landmark_check)},
+          {"model_audit", ModelAuditJson(pruning)}};
 }
 
 void WriteJsonAtomically(const nlohmann::json& report, const std::filesystem::path& path) {

@@ -70,13 +70,14 @@ nlohmann::json TimingsJson(const EngineSettings& settings, const sfm_pruning::Vi
   json["max_epipolar_error_deg"] = settings.max_epipolar_error_deg;
   json["verification_precision_ratio"] = settings.verification_precision_ratio;
   if (settings.engine == "GLOBAL_PRUNED") {
-    json["prune_model_audit"] = settings.pruning.audit.enabled;
-    json["prune_audit_model"] = AuditModelName(settings.pruning.audit.model_schedule);
+    json["prune_audit_enabled"] = settings.pruning.audit.enabled;
+    json["prune_audit_model_schedule"] = AuditModelName(settings.pruning.audit.model_schedule);
     json["prune_audit_refine_final"] = settings.pruning.audit.refine_final;
-    json["prune_landmark_check_deg"] = settings.pruning.landmark_check.max_angle_deg;
-    json["prune_ransac_enumerate_max"] = settings.pruning.alignment.max_enumerated_samples;
+    json["prune_landmark_check_max_angle_deg"] = settings.pruning.landmark_check.max_angle_deg;
+    json["prune_max_enumerated_samples"] = settings.pruning.alignment.max_enumerated_samples;
     json["prune_bisect_unsplittable"] = settings.pruning.partition.bisect_unsplittable;
-    json["prune_baseline_ratio_factor"] = settings.pruning.partition.consistency.max_baseline_ratio_factor;
+    json["prune_max_baseline_ratio_factor"] =
+        settings.pruning.partition.consistency.max_baseline_ratio_factor;
     json["prune_trust_prior_edges"] = settings.pruning.trust_prior_edges;
   }
   json["seed"] = settings.seed;
