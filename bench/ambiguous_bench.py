@@ -31,58 +31,20 @@ Python 3 standard library only.
 import json
 import math
 import shutil
-import sqlite3
 import statistics
-import struct
 import sys
 from pathlib import Path
 
 sys.path.insert(0, str(Path(__file__).resolve().parent))
+import bench_colmap as bc  # noqa: E402
 import bench_support as bs  # noqa: E402
-import run_benchmarks as rb  # noqa: E402
 
 SCENES = {"books": "ambiguous/books", "street": "ambiguous/street"}
 ENGINES = ["GLOBAL", "GLOBAL_PRUNED", "colmap", "colmap+prune"]
 
 
 # ----------------------------------------------------------------------------------------------
-# Small 3-vector / 3x3 algebra (standard library only)
-# ----------------------------------------------------------------------------------------------
-
-def quat_to_rot(qw, qx, qy, qz):
-    n = math.sqrt(qw * qw + qx * qx + qy * qy + qz * qz)
-    w, x, y, z = qw / n, qx / n, qy / n, qz / n
-    return [[1 - 2 * (y * y + z * z), 2 * (x * y - z * w), 2 * (x * z + y * w)],
-            [2 * (x * y + z * w), 1 - 2 * (x * x + z * z), 2 * (y * z - x * w)],
-            [2 * (x * z - y * w), 2 * (y * z + x * w), 1 - 2 * (x * x + y * y)]]
-
-
-def matmul(a, b):
-    return [[sum(a[i][k] * b[k][j] for k in range(3)) for j in range(3)] for i in range(3)]
-
-
-def matvec(a, v):
-    return [sum(a[i][k] * v[k] for k in range(3)) for i in range(3)]
-
-
-def transpose(a):
-    return [[a[j][i] for j in range(3)] for i in range(3)]
-
-
-def sub(a, b):
-    return [a[i] - b[i] for i in range(3)]
-
-
-def norm(v):
-    return math.sqrt(sum(x * x for x in v))
-
-
-def skew(t):
-    return [[0, -t[2], t[1]], [t[2], 0, -t[0]], [-t[1], t[0], 0]]
-
-
-# ----------------------------------------------------------------------------------------------
-# Inputs: exif focal, COLMAP database, COLMAP text model
+# Inputs: exif focal (the COLMAP database and text models: bench_colmap.py)
 # ----------------------------------------------------------------------------------------------
 
 def exif_camera(path):
@@ -97,119 +59,9 @@ def exif_camera(path):
     return cams.pop()
 
 
-def read_database(db_path):
-    """names {image_id: name}, keypoints {image_id: [(x, y)]}, inliers {(id1, id2): [(i, j)]}."""
-    db = sqlite3.connect(str(db_path))
-    try:
-        names = dict(db.execute("SELECT image_id, name FROM images"))
-        keypoints = {}
-        for image_id, rows, cols, data in db.execute("SELECT image_id, rows, cols, data FROM keypoints"):
-            values = struct.unpack(f"<{rows * cols}f", data) if rows else ()
-            keypoints[image_id] = [(values[r * cols], values[r * cols + 1]) for r in range(rows)]
-        inliers = {}
-        for pair_id, rows, data in db.execute("SELECT pair_id, rows, data FROM two_view_geometries WHERE rows > 0"):
-            values = struct.unpack(f"<{rows * 2}I", data)
-            inliers[(pair_id // rb.COLMAP_PAIR_BASE, pair_id % rb.COLMAP_PAIR_BASE)] = \
-                [(values[2 * r], values[2 * r + 1]) for r in range(rows)]
-    finally:
-        db.close()
-    return names, keypoints, inliers
-
-
-def read_text_model(folder):
-    """cameras {id: (model, w, h, params)}, images {name: (R, t, camera_id)} (world to camera)."""
-    cameras, images = {}, {}
-    for line in (Path(folder) / "cameras.txt").read_text().splitlines():
-        if line.strip() and not line.startswith("#"):
-            f = line.split()
-            cameras[int(f[0])] = (f[1], int(f[2]), int(f[3]), [float(x) for x in f[4:]])
-    lines = [l for l in (Path(folder) / "images.txt").read_text().splitlines() if not l.startswith("#")]
-    for line in lines[0::2]:
-        f = line.split()
-        if len(f) < 10:
-            continue
-        images[f[9]] = (quat_to_rot(*map(float, f[1:5])), [float(x) for x in f[5:8]], int(f[8]))
-    return cameras, images
-
-
-def read_text_tracks(folder):
-    """The reference's tracks: point ids {name: [point3D_id per keypoint, -1 = none]} and
-    points {point3D_id: xyz}. The reference shares the exhaustive database's keypoints."""
-    lines = [l for l in (Path(folder) / "images.txt").read_text().splitlines() if not l.startswith("#")]
-    point_ids = {}
-    for header, observations in zip(lines[0::2], lines[1::2]):
-        f = header.split()
-        if len(f) < 10:
-            continue
-        values = observations.split()
-        point_ids[f[9]] = [int(values[k]) for k in range(2, len(values), 3)]
-    points = {}
-    for line in (Path(folder) / "points3D.txt").read_text().splitlines():
-        if line.strip() and not line.startswith("#"):
-            f = line.split()
-            points[int(f[0])] = [float(x) for x in f[1:4]]
-    return point_ids, points
-
-
-def intrinsics(camera):
-    """fx, fy, cx, cy, k (radial) of the models the extractor is told to use (SIMPLE_RADIAL;
-    PINHOLE/SIMPLE_PINHOLE for completeness)."""
-    model, _, _, p = camera
-    if model == "SIMPLE_RADIAL":
-        return p[0], p[0], p[1], p[2], p[3]
-    if model == "SIMPLE_PINHOLE":
-        return p[0], p[0], p[1], p[2], 0.0
-    if model == "PINHOLE":
-        return p[0], p[1], p[2], p[3], 0.0
-    sys.exit(f"ambiguous_bench: camera model {model} not handled")
-
-
-def project(camera, R, t, X):
-    """Pixel of world point X in a camera (COLMAP convention), None behind it."""
-    fx, fy, cx, cy, k = intrinsics(camera)
-    x = [a + b for a, b in zip(matvec(R, X), t)]
-    if x[2] <= 0:
-        return None
-    u, v = x[0] / x[2], x[1] / x[2]
-    s = 1.0 + k * (u * u + v * v)
-    return fx * u * s + cx, fy * v * s + cy
-
-
-def normalized(camera, xy):
-    """Pixel (COLMAP convention) -> undistorted normalized coordinates."""
-    fx, fy, cx, cy, k = intrinsics(camera)
-    ud, vd = (xy[0] - cx) / fx, (xy[1] - cy) / fy
-    u, v = ud, vd
-    for _ in range(20):  # x_d = x_u (1 + k r_u^2): fixed point
-        s = 1.0 + k * (u * u + v * v)
-        u, v = ud / s, vd / s
-    return u, v
-
-
 # ----------------------------------------------------------------------------------------------
 # Preparation (COLMAP)
 # ----------------------------------------------------------------------------------------------
-
-def has_keypoints(db):
-    if not Path(db).is_file():
-        return False
-    try:
-        con = sqlite3.connect(str(db))
-        n = con.execute("SELECT COUNT(*) FROM keypoints WHERE rows > 0").fetchone()[0]
-        con.close()
-        return n > 0
-    except sqlite3.Error:
-        return False
-
-
-def fold_wal(db):
-    """COLMAP 3.8 leaves its last writes in DB-wal: checkpoint them into the file."""
-    con = sqlite3.connect(str(db))
-    try:
-        con.execute("PRAGMA wal_checkpoint(TRUNCATE)")
-    finally:
-        con.close()
-
 
 def prepare(args, scene, work):
     """base.db (features), sequential.db and exhaustive.db (verified pairs). Returns stage records."""
@@ -219,21 +71,16 @@ def prepare(args, scene, work):
     base, seq, exh = work / "base.db", work / "sequential.db", work / "exhaustive.db"
     t = str(args.threads)
     stages = []
-    env = rb.colmap_env()
-    if not (args.reuse and has_keypoints(base)):
+    if not (args.reuse and bc.has_keypoints(base)):
         for p in (base, Path(str(base) + "-wal"), Path(str(base) + "-shm")):
             p.unlink(missing_ok=True)
         # A known focal (prior_focal_length = 1) from EXIF; principal point at the centre, k = 0 to start.
         params = f"{f_px},{w / 2},{h / 2},0"
-        stages.append(rb.run_stage("features", [
-            args.colmap, "feature_extractor", "--database_path", base, "--image_path", images,
-            "--ImageReader.single_camera", "1", "--ImageReader.camera_model", "SIMPLE_RADIAL",
-            "--ImageReader.camera_params", params, "--SiftExtraction.use_gpu", "0",
-            "--SiftExtraction.num_threads", t, "--SiftExtraction.max_image_size", args.max_image_size],
-            work / "features.log", args.timeout, env))
+        stages.append(bs.colmap_features("features", args.colmap, base, images, work / "features.log", t,
+                                         args.max_image_size, args.timeout, camera_params=params))
         if stages[-1]["rc"] != 0:
             sys.exit(f"ambiguous_bench: {scene}: feature_extractor failed: {stages[-1].get('error')}")
-        fold_wal(base)
+        bc.fold_wal(base)
     matchers = [
         ("sequential", seq, ["sequential_matcher", "--SequentialMatching.overlap", str(args.overlap),
                              "--SequentialMatching.quadratic_overlap", "0",
@@ -241,15 +88,13 @@ def prepare(args, scene, work):
         ("exhaustive", exh, ["exhaustive_matcher"]),
     ]
     for name, db, matcher in matchers:
-        if args.reuse and rb.num_verified_pairs(db) > 0:
+        if args.reuse and bc.num_verified_pairs(db) > 0:
             continue
-        rb.copy_database(base, db)
-        stages.append(rb.run_stage(name, [args.colmap, *matcher, "--database_path", db,
-                                          "--SiftMatching.use_gpu", "0", "--SiftMatching.num_threads", t],
-                                   work / f"{name}.log", args.timeout, env))
+        bc.copy_database(base, db)
+        stages.append(bs.colmap_match(name, args.colmap, matcher, db, work / f"{name}.log", t, args.timeout))
         if stages[-1]["rc"] != 0:
             sys.exit(f"ambiguous_bench: {scene}: {matcher[0]} failed: {stages[-1].get('error')}")
-        fold_wal(db)
+        bc.fold_wal(db)
     return images, (w, h, f_px), stages
 
 
@@ -258,20 +103,19 @@ def build_reference(args, work, images):
     ref = work / "reference"
     txt = ref / "text"
     stages = []
-    model, num_models = rb.largest_model(ref / "sparse")
+    model, num_models = bc.largest_model(ref / "sparse")
     if not (args.reuse and model is not None and (txt / "images.txt").is_file()):
         if ref.exists():
             shutil.rmtree(ref)
         db = work / "reference.db"
-        rb.copy_database(work / "sequential.db", db)
+        bc.copy_database(work / "sequential.db", db)
         stage, model = bs.colmap_mapper(args.colmap, db, images, ref, str(args.threads), args.timeout, False)
         stages.append(stage)
         if model is None:
             sys.exit(f"ambiguous_bench: the reference mapper made no model (see {ref / 'map.log'})")
         txt.mkdir(parents=True)
-        rb.run_stage("convert", [args.colmap, "model_converter", "--input_path", model, "--output_path", txt,
-                                 "--output_type", "TXT"], ref / "convert.log", args.timeout, rb.colmap_env())
-        _, num_models = rb.largest_model(ref / "sparse")
+        bs.colmap_to_text(args.colmap, model, txt, ref / "convert.log", args.timeout)
+        _, num_models = bc.largest_model(ref / "sparse")
     return model, num_models, txt, stages
 
 
@@ -286,17 +130,17 @@ def pair_sampson_px(cameras, images, names, keypoints, pair, matches):
         return None
     R1, t1, c1 = images[n1]
     R2, t2, c2 = images[n2]
-    R = matmul(R2, transpose(R1))
-    t = sub(t2, matvec(R, t1))
-    E = matmul(skew(t), R)
-    Et = transpose(E)
+    R = bc.matmul(R2, bc.transpose(R1))
+    t = bc.sub(t2, bc.matvec(R, t1))
+    E = bc.matmul(bc.skew(t), R)
+    Et = bc.transpose(E)
     focal = 0.5 * (cameras[c1][3][0] + cameras[c2][3][0])
     errors = []
     for i, j in matches:
-        u1, v1 = normalized(cameras[c1], keypoints[pair[0]][i])
-        u2, v2 = normalized(cameras[c2], keypoints[pair[1]][j])
+        u1, v1 = bc.normalized(cameras[c1], keypoints[pair[0]][i])
+        u2, v2 = bc.normalized(cameras[c2], keypoints[pair[1]][j])
         x1, x2 = [u1, v1, 1.0], [u2, v2, 1.0]
-        Ex1, Etx2 = matvec(E, x1), matvec(Et, x2)
+        Ex1, Etx2 = bc.matvec(E, x1), bc.matvec(Et, x2)
         num = sum(x2[k] * Ex1[k] for k in range(3))
         den = Ex1[0] ** 2 + Ex1[1] ** 2 + Etx2[0] ** 2 + Etx2[1] ** 2
         errors.append(math.sqrt(num * num / den) * focal if den > 0 else float("inf"))
@@ -321,7 +165,7 @@ def pair_transfer(cameras, images, tracks, names, keypoints, pair, matches, max_
             if point < 0 or point not in points:
                 continue
             R, t, cam = images[n[1 - a]]
-            pixel = project(cameras[cam], R, t, points[point])
+            pixel = bc.project(cameras[cam], R, t, points[point])
             seen = keypoints[pair[1 - a]][f[1 - a]]
             error = math.inf if pixel is None else math.hypot(pixel[0] - seen[0], pixel[1] - seen[1])
             true += error <= max_px
@@ -331,9 +175,9 @@ def pair_transfer(cameras, images, tracks, names, keypoints, pair, matches, max_
 
 
 def check_reference(args, work, txt, num_models):
-    cameras, images = read_text_model(txt)
-    tracks = read_text_tracks(txt)
-    names, keypoints, inliers = read_database(work / "exhaustive.db")
+    cameras, images = bc.read_text_model(txt)
+    tracks = bc.read_text_tracks(txt)
+    names, keypoints, inliers = bc.read_database(work / "exhaustive.db")
     order = {name: k for k, name in enumerate(sorted(names.values()))}
     check = {"images": len(names), "registered": len(images), "models": num_models}
     pairs = []
@@ -363,16 +207,16 @@ def check_reference(args, work, txt, num_models):
     check["sequential_pairs_not_fitting"] = [p for p in near if not fits(p)]
     # Trajectory: centres in capture order.
     seq = sorted(images, key=lambda n: order.get(n, 0))
-    centres = {n: [-x for x in matvec(transpose(images[n][0]), images[n][1])] for n in seq}
+    centres = {n: bc.camera_centre(images[n][0], images[n][1]) for n in seq}
     axis = {n: images[n][0][2] for n in seq}  # viewing direction = third row of R
-    steps = [norm(sub(centres[b], centres[a])) for a, b in zip(seq, seq[1:])]
+    steps = [bc.norm(bc.sub(centres[b], centres[a])) for a, b in zip(seq, seq[1:])]
     median_step = statistics.median(steps) if steps else float("nan")
     check["median_step"] = median_step
     check["max_step_ratio"] = round(max(steps) / median_step, 2) if steps and median_step > 0 else None
     merged = []
     for a in range(len(seq)):
         for b in range(a + args.overlap + 1, len(seq)):
-            dist = norm(sub(centres[seq[a]], centres[seq[b]]))
+            dist = bc.norm(bc.sub(centres[seq[a]], centres[seq[b]]))
             cosang = sum(axis[seq[a]][k] * axis[seq[b]][k] for k in range(3))
             if dist < 0.3 * median_step and cosang > math.cos(math.radians(15)):
                 merged.append([seq[a], seq[b]])
@@ -391,20 +235,17 @@ def removed_pairs_of(report):
 
 def run_engine(args, prunesfm, engine, work, images):
     out = work / engine
-    if out.exists():
-        shutil.rmtree(out)
-    out.mkdir(parents=True)
+    bs.fresh_folder(out)
     db = out / "database.db"
-    rb.copy_database(work / "exhaustive.db", db)
+    bc.copy_database(work / "exhaustive.db", db)
     t = str(args.threads)
     row = {"engine": engine, "stages": []}
     if engine in ("GLOBAL", "GLOBAL_PRUNED"):
         result = out / "result"
-        stage = rb.run_stage("run", [prunesfm, "run", "--database", db, "--image_path", images, "--output_path",
-                                     result, "--engine", engine, "--num_threads", t, "--seed", str(args.seed)],
-                             out / "run.log", args.timeout)
+        stage = bs.run_ours_on_database(prunesfm, db, images, result, engine, out / "run.log", args.timeout,
+                                        ["--num_threads", t, "--seed", str(args.seed)])
         row["stages"].append(stage)
-        model, _ = rb.largest_model(result / "sparse")
+        model, _ = bc.largest_model(result / "sparse")
         report = result / "pruning_report.json"
         if report.is_file():
             row["removed"] = sorted(removed_pairs_of(json.loads(report.read_text())))
@@ -452,15 +293,12 @@ def symmetric_eigenvectors(m):
 def model_centres(args, model, out_dir):
     """Camera centres of a model in capture (name) order, via COLMAP's text export."""
     txt = Path(out_dir) / "text"
-    if txt.exists():
-        shutil.rmtree(txt)
-    txt.mkdir(parents=True)
-    rb.run_stage("convert", [args.colmap, "model_converter", "--input_path", model, "--output_path", txt,
-                             "--output_type", "TXT"], Path(out_dir) / "convert.log", args.timeout, rb.colmap_env())
+    bs.fresh_folder(txt)
+    bs.colmap_to_text(args.colmap, model, txt, Path(out_dir) / "convert.log", args.timeout)
     if not (txt / "images.txt").is_file():
         return []
-    _, images = read_text_model(txt)
-    return [(name, [-x for x in matvec(transpose(images[name][0]), images[name][1])]) for name in sorted(images)]
+    _, images = bc.read_text_model(txt)
+    return [(name, bc.camera_centre(images[name][0], images[name][1])) for name in sorted(images)]
 
 
 def trajectory_svg(panels, path):
@@ -629,7 +467,7 @@ def parse_args(argv):
                    help="a pair fits the reference when its inliers' median Sampson error is below this")
     p.add_argument("--max_transfer_px", type=float, default=4.0,
                    help="a match is true when the reference point of one keypoint projects this close to the other")
-    p.add_argument("--max_image_size", type=int, default=3200, help="COLMAP SiftExtraction.max_image_size")
+    bs.add_options(p, "max_image_size")
     p.add_argument("--reuse", action="store_true",
                    help="keep the features, matches and reference an earlier run left in --work")
     p.add_argument("--prepare_only", action="store_true", help="features, matching, reference and its check only")
@@ -642,7 +480,7 @@ def main(argv):
     args = parse_args(argv)
     if not args.colmap:
         sys.exit("ambiguous_bench: needs Debian's colmap on the PATH (or --colmap)")
-    prunesfm = rb.find_prunesfm(args.prunesfm)
+    prunesfm = bs.find_prunesfm(args.prunesfm)
     if args.rewrite_report:
         saved = json.loads((Path(args.work) / "results.json").read_text())
         bs.write_fragment("ambiguous", markdown(args, saved["header"], saved["scenes"]))
@@ -678,7 +516,7 @@ def main(argv):
                 result["engines"].append(row)
                 centres = model_centres(args, estimate, work / engine) if estimate is not None else []
                 panels.append((engine, centres, check["images"]))
-            trajectory_svg(panels, rb.REPO / "docs" / "images" / f"ambiguous_{scene}.svg")
+            trajectory_svg(panels, bs.REPO / "docs" / "images" / f"ambiguous_{scene}.svg")
         results[scene] = result
     if not args.prepare_only:
         (Path(args.work) / "results.json").write_text(json.dumps({"header": header, "scenes": results}, indent=2) + "\n")

@@ -14,14 +14,12 @@ Writes bench/sections/export.md. Python 3 standard library only.
 
 import filecmp
 import re
-import shutil
 import struct
 import sys
 from pathlib import Path
 
 sys.path.insert(0, str(Path(__file__).resolve().parent))
 import bench_support as bs  # noqa: E402
-import run_benchmarks as rb  # noqa: E402
 
 # COLMAP camera model ids and parameter counts (FORMATS.md), enough to read the undistorted cameras.
 CAMERA_MODELS = {0: ("SIMPLE_PINHOLE", 3), 1: ("PINHOLE", 4), 2: ("SIMPLE_RADIAL", 4), 3: ("RADIAL", 5),
@@ -60,7 +58,7 @@ def scene_inputs(args, prunesfm, scene, out):
     if not model.is_file():
         return f"input missing: {model}"
     colmap_model = out / "distorted"
-    stage = rb.run_stage("convert", [prunesfm, "convert", "--input", model, "--output", colmap_model],
+    stage = bs.run_stage("convert", [prunesfm, "convert", "--input", model, "--output", colmap_model],
                          out / "convert.log", args.timeout)
     if stage["rc"] != 0:
         return f"convert failed: {stage.get('error')}"
@@ -69,34 +67,32 @@ def scene_inputs(args, prunesfm, scene, out):
 
 def run_scene(args, prunesfm, colmap, scene):
     out = Path(args.work) / scene
-    if out.exists():
-        shutil.rmtree(out)
-    out.mkdir(parents=True)
+    bs.fresh_folder(out)
     inputs = scene_inputs(args, prunesfm, scene, out)
     if isinstance(inputs, str):
         return {"scene": scene, "status": inputs}
     model, colmap_model, images = inputs
     threads = str(args.threads)
     row = {"scene": scene, "status": "ok", "images": len(list(images.iterdir()))}
-    ours = rb.run_stage("export colmap-undistorted",
+    ours = bs.run_stage("export colmap-undistorted",
                         [prunesfm, "export", "--model", model, "--images", images, "--format", "colmap-undistorted",
                          "--output", out / "ours", "--num_threads", threads], out / "export.log", args.timeout)
-    theirs = rb.run_stage("image_undistorter",
+    theirs = bs.run_stage("image_undistorter",
                           [colmap, "image_undistorter", "--image_path", images, "--input_path", colmap_model,
                            "--output_path", out / "colmap", "--output_type", "COLMAP"],
-                          out / "undistorter.log", args.timeout, rb.colmap_env())
-    mvs = rb.run_stage("export openmvs", [prunesfm, "export", "--model", model, "--images", images, "--format",
+                          out / "undistorter.log", args.timeout, bs.colmap_env())
+    mvs = bs.run_stage("export openmvs", [prunesfm, "export", "--model", model, "--images", images, "--format",
                                           "openmvs", "--output", out / "mvs", "--num_threads", threads],
                        out / "export_mvs.log", args.timeout)
-    ply = rb.run_stage("export ply", [prunesfm, "export", "--model", model, "--images", images, "--format", "ply",
+    ply = bs.run_stage("export ply", [prunesfm, "export", "--model", model, "--images", images, "--format", "ply",
                                       "--output", out / "points.ply", "--num_threads", threads],
                        out / "export_ply.log", args.timeout)
     for stage in (ours, theirs, mvs, ply):
         if stage["rc"] != 0:
             row["status"] = f"{stage['name']} failed: {stage.get('error')}"
             return row
-    analyzer = rb.run_stage("model_analyzer", [colmap, "model_analyzer", "--path", out / "ours" / "sparse"],
-                            out / "analyzer.log", args.timeout, rb.colmap_env())
+    analyzer = bs.run_stage("model_analyzer", [colmap, "model_analyzer", "--path", out / "ours" / "sparse"],
+                            out / "analyzer.log", args.timeout, bs.colmap_env())
     row.update({
         "ours": ours, "colmap": theirs, "openmvs": mvs, "ply": ply,
         "ours_camera": first_camera(out / "ours" / "sparse" / "cameras.bin"),
@@ -142,7 +138,7 @@ def main(argv):
                         help="bench/run_benchmarks.py's --work folder (COLMAP's temple model)")
     parser.add_argument("--scenes", default="templeSparseRing,sceaux_castle")
     args = parser.parse_args(argv[1:])
-    prunesfm = rb.find_prunesfm(args.prunesfm)
+    prunesfm = bs.find_prunesfm(args.prunesfm)
     colmap = args.colmap
     if not colmap:
         sys.exit("export_bench: colmap not found (Debian package colmap)")

@@ -23,15 +23,13 @@ run unless --fresh, so a long benchmark can be stopped and resumed. Python 3 sta
 import argparse
 import concurrent.futures
 import json
-import shutil
 import statistics
 import sys
 from pathlib import Path
 
 sys.path.insert(0, str(Path(__file__).resolve().parent))
+import bench_colmap as bc  # noqa: E402
 import bench_support as bs  # noqa: E402
-import oracle_pruning_bench as oracle  # noqa: E402
-import run_benchmarks as rb  # noqa: E402
 
 FAMILIES = ["family_street", "family_courtyard", "family_object", "family_desk", "family_loop", "family_control"]
 SPLIT_FIRST_SEED = {"dev": 0, "heldout": 100000}
@@ -45,8 +43,8 @@ BARS = (90.0, 95.0)
 
 def parse_args(argv):
     p = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
-    p.add_argument("--prunesfm", default=None, help="prunesfm binary (default: the newest build)")
-    p.add_argument("--colmap", default="colmap")
+    bs.add_options(p, "prunesfm", "colmap", prunesfm={"help": bs.NEWEST_BUILD_HELP},
+                   colmap={"default": "colmap", "help": None})
     p.add_argument("--families", default=",".join(FAMILIES))
     p.add_argument("--split", default="dev,heldout", help="dev, heldout or both (comma-separated)")
     p.add_argument("--per_family", type=int, default=17, help="scenes per family and split")
@@ -59,9 +57,10 @@ def parse_args(argv):
     p.add_argument("--ablation", action="append", default=[], metavar="NAME=FLAGS",
                    help="also run GLOBAL_PRUNED with FLAGS on the own input (results under GLOBAL_PRUNED+NAME) and "
                         "report it beside the defaults in the ablation table; repeatable")
-    p.add_argument("--jobs", type=int, default=2, help="scenes run at once (each tool on 1 thread)")
-    p.add_argument("--timeout", type=int, default=1800, help="seconds per stage")
-    p.add_argument("--work", default="/tmp/prunesfm-families")
+    bs.add_options(p, "jobs", "timeout", "work",
+                   jobs={"default": 2, "help": "scenes run at once (each tool on 1 thread)"},
+                   timeout={"default": 1800, "help": "seconds per stage"},
+                   work={"default": "/tmp/prunesfm-families", "help": None})
     p.add_argument("--fresh", action="store_true", help="recompute results already in --work")
     p.add_argument("--report_only", action="store_true",
                    help="compute nothing: report the results already in --work (a partial run says how many)")
@@ -93,7 +92,7 @@ def prepare(args, prunesfm, scene):
     folder = Path(args.work) / scene["key"]
     synth = folder / "synth"
     if not (synth / "database.db").is_file():
-        stage = rb.run_stage("synth", [prunesfm, "synth", "--scene", scene["family"], "--seed", scene["seed"],
+        stage = bs.run_stage("synth", [prunesfm, "synth", "--scene", scene["family"], "--seed", scene["seed"],
                                        "--output", synth], folder / "synth.log", args.timeout)
         if stage["rc"] != 0:
             raise RuntimeError(f"{scene['key']}: synth failed: {stage.get('error')}")
@@ -105,16 +104,15 @@ def colmap_verified(args, scene, synth):
     """COLMAP 3.8's verification of the scene's putative matches (kept in --work)."""
     folder = Path(args.work) / scene["key"]
     verified = folder / "colmap_verified.db"
-    if verified.is_file() and rb.num_verified_pairs(verified) > 0:
+    if verified.is_file() and bc.num_verified_pairs(verified) > 0:
         return verified
     scratch = folder / "colmap_verify.db"
-    rb.copy_database(synth / "database.db", scratch)
-    argv = rb.colmap_verification_argv(args.colmap, scratch, folder / "pairs.txt")
-    argv += ["--SiftMatching.use_gpu", "0", "--SiftMatching.num_threads", "1"]
-    stage = rb.run_stage("colmap verify", argv, folder / "colmap_verify.log", args.timeout, rb.colmap_env())
+    bc.copy_database(synth / "database.db", scratch)
+    stage = bs.verify_synthetic_matches("colmap verify", args.colmap, scratch, folder / "pairs.txt",
+                                        folder / "colmap_verify.log", 1, args.timeout)
     if stage["rc"] != 0:
         raise RuntimeError(f"{scene['key']}: COLMAP verification failed: {stage.get('error')}")
-    rb.copy_database(scratch, verified)
+    bc.copy_database(scratch, verified)
     scratch.unlink()
     return verified
 
@@ -156,26 +154,23 @@ def run_engine(args, prunesfm, scene, synth, input_path, database, engine, ablat
     result_path = out / "result.json"
     if result_path.is_file() and not args.fresh:
         return json.loads(result_path.read_text())
-    if out.exists():
-        shutil.rmtree(out)
-    out.mkdir(parents=True)
+    bs.fresh_folder(out)
     db = out / "database.db"
-    rb.copy_database(database, db)
+    bc.copy_database(database, db)
     images = out / "images"  # empty: synthetic scenes are features only (COLMAP wants the folder)
     images.mkdir()
     if engine in ORACLES:
         truth = synth / "ground_truth"
-        twin_pairs, _ = oracle.twin_dominated_pairs(truth / "synthetic_scene.json", 1.0)
-        oracle.delete_pairs(db, twin_pairs)
+        twin_pairs, _ = bs.twin_dominated_pairs(truth / "synthetic_scene.json", 1.0)
+        bs.delete_pairs(db, twin_pairs)
         if ORACLES[engine]:
-            oracle.delete_twin_matches(db, oracle.read_feature_landmarks(truth / "feature_landmarks.txt"))
+            bs.delete_twin_matches(db, bs.read_feature_landmarks(truth / "feature_landmarks.txt"))
     if engine == "colmap":
         stage, model = bs.colmap_mapper(args.colmap, db, images, out, 1, args.timeout, synthetic=True)
     else:
-        argv = [prunesfm, "run", "--database", db, "--image_path", images, "--output_path", out / "result",
-                "--engine", engine.split("@")[0], "--num_threads", 1, *extra.split()]
-        stage = rb.run_stage("run", argv, out / "run.log", args.timeout)
-        model, _ = rb.largest_model(out / "result" / "sparse")
+        stage = bs.run_ours_on_database(prunesfm, db, images, out / "result", engine.split("@")[0], out / "run.log",
+                                        args.timeout, ["--num_threads", 1, *extra.split()])
+        model, _ = bc.largest_model(out / "result" / "sparse")
     evaluation = bs.evaluate_against(prunesfm, model, synth / "ground_truth" / "gt_cameras.txt", out, 0,
                                      args.timeout)
     result = {"scene": scene["key"], "family": scene["family"], "seed": scene["seed"], "split": scene["split"],
@@ -378,7 +373,7 @@ def markdown(args, argv, prunesfm, rows):
 
 def main(argv):
     args = parse_args(argv)
-    prunesfm = rb.find_prunesfm(args.prunesfm)
+    prunesfm = bs.find_prunesfm(args.prunesfm)
     Path(args.work).mkdir(parents=True, exist_ok=True)
     scenes = scene_list(args)
     rows = []

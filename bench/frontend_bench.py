@@ -24,7 +24,6 @@ from pathlib import Path
 
 sys.path.insert(0, str(Path(__file__).resolve().parent))
 import bench_support as bs  # noqa: E402
-import run_benchmarks as rb  # noqa: E402
 
 # scene -> (images below shared/datasets, ground truth or None, intrinsics: "K.txt", "gt", "exif")
 SCENES = {
@@ -76,21 +75,15 @@ def carried_colmap(scene):
     return None
 
 
-def run_colmap(args, scene, images, out):
+def run_colmap_front_end(args, images, out):
+    """COLMAP's feature_extractor + exhaustive_matcher on the images, measured in this run."""
     db = out / "database.db"
     out.mkdir(parents=True, exist_ok=True)
     db.unlink(missing_ok=True)
-    t = str(args.threads)
-    env = rb.colmap_env()
-    features = rb.run_stage("colmap features", [args.colmap, "feature_extractor", "--database_path", db,
-                                                "--image_path", images, "--ImageReader.single_camera", "1",
-                                                "--ImageReader.camera_model", rb.COLMAP_CAMERA_MODEL,
-                                                "--SiftExtraction.use_gpu", "0", "--SiftExtraction.num_threads", t,
-                                                "--SiftExtraction.max_image_size", "3200"],
-                            out / "features.log", args.timeout, env)
-    match = rb.run_stage("colmap match", [args.colmap, "exhaustive_matcher", "--database_path", db,
-                                          "--SiftMatching.use_gpu", "0", "--SiftMatching.num_threads", t],
-                         out / "match.log", args.timeout, env)
+    features = bs.colmap_features("colmap features", args.colmap, db, images, out / "features.log", args.threads,
+                                  "3200", args.timeout)
+    match = bs.colmap_match("colmap match", args.colmap, ["exhaustive_matcher"], db, out / "match.log", args.threads,
+                            args.timeout)
     if features["rc"] != 0 or match["rc"] != 0:
         return None
     return {"features": features["seconds"], "match": match["seconds"], "date": None, "db": db,
@@ -102,14 +95,15 @@ def run_log(out, engine):
     return out.parent / f"{out.name}.run_{engine}.log"
 
 
-def run_ours(args, prunesfm, scene, images, intrinsics, out, engine, force):
+def run_ours_from_images(args, prunesfm, images, intrinsics, out, engine, force):
+    """`prunesfm run IMAGES OUT`: our front end and the engine; returns (stage, timings.json or None)."""
     argv = [prunesfm, "run", images, out, "--engine", engine, "--num_threads", args.threads, "--solver_threads", args.threads,
             "--seed", args.seed]
     if intrinsics is not None:
         argv += ["--k_file", intrinsics]
     if force:
         argv.append("--force")
-    stage = rb.run_stage(f"prunesfm run {engine}", argv, run_log(out, engine), args.timeout)
+    stage = bs.run_stage(f"prunesfm run {engine}", argv, run_log(out, engine), args.timeout)
     timings = json.loads((out / "timings.json").read_text()) if stage["rc"] == 0 else None
     return stage, timings
 
@@ -120,7 +114,7 @@ def main():
     parser.add_argument("--colmap_scenes", default="templeSparseRing",
                         help="scenes on which COLMAP's extraction and matching are re-measured in this run")
     args = parser.parse_args()
-    prunesfm = str(Path(rb.find_prunesfm(args.prunesfm)).resolve())
+    prunesfm = str(Path(bs.find_prunesfm(args.prunesfm)).resolve())
     shared = Path(args.shared) / "datasets"
     work = Path(args.work)
     lines = bs.header_lines("Image front end: from photos (bench/frontend_bench.py)", sys.argv, prunesfm, args.colmap)
@@ -137,7 +131,7 @@ def main():
             k_file = k_file_from_gt(gt, work / scene / "K_from_gt.txt")
         engines = ["GLOBAL", "GLOBAL_PRUNED"] if scene in ("castle-P19", "books", "street") else ["GLOBAL"]
         for n, engine in enumerate(engines):
-            stage, timings = run_ours(args, prunesfm, scene, images, k_file, out, engine, force=(n == 0))
+            stage, timings = run_ours_from_images(args, prunesfm, images, k_file, out, engine, force=(n == 0))
             row = {"scene": scene, "engine": engine, "intrinsics": intrinsics_kind, "rc": stage["rc"],
                    "seconds": stage["seconds"], "peak_mb": stage["peak_mb"]}
             if timings:
@@ -152,7 +146,7 @@ def main():
                 front = sum(row["stages"].get(s, 0.0) for s in ("init", "features", "match"))
                 speed = {"scene": scene, "ours": row["stages"], "ours_front": front,
                          "ours_inliers": ours_inliers(run_log(out, engine)), "ours_peak_mb": stage["peak_mb"]}
-                colmap = run_colmap(args, scene, images, work / scene / "colmap") \
+                colmap = run_colmap_front_end(args, images, work / scene / "colmap") \
                     if scene in args.colmap_scenes.split(",") else carried_colmap(scene)
                 if colmap:
                     speed["colmap"] = colmap

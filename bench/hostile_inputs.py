@@ -42,9 +42,10 @@ import time
 from dataclasses import dataclass, field
 from pathlib import Path
 
-REPO = Path(__file__).resolve().parent.parent
 sys.path.insert(0, str(Path(__file__).resolve().parent))
 import bench_support as bs  # noqa: E402
+
+REPO = bs.REPO
 
 SANITIZER_MARKS = ("AddressSanitizer", "LeakSanitizer", "UndefinedBehaviorSanitizer", "runtime error:",
                    "terminate called", "Segmentation fault", "Aborted")
@@ -865,11 +866,11 @@ def write_report(path, argv, prunesfm, cases, timeout):
 
 def main():
     parser = argparse.ArgumentParser(description=__doc__.split("\n")[0])
-    parser.add_argument("--prunesfm", default=None, help="prunesfm binary (default: the newest build)")
-    parser.add_argument("--shared", default=str(REPO.parent / "shared"))
-    parser.add_argument("--work", default="/tmp/prunesfm-hostile", help="scratch folder (failed cases stay here)")
-    parser.add_argument("--timeout", type=float, default=60.0, help="seconds a case may run")
-    parser.add_argument("--seed", type=int, default=0, help="seed of the random bytes")
+    bs.add_options(parser, "prunesfm", "shared", "work", "timeout", "seed",
+                   prunesfm={"help": bs.NEWEST_BUILD_HELP}, shared={"help": None},
+                   work={"default": "/tmp/prunesfm-hostile", "help": "scratch folder (failed cases stay here)"},
+                   timeout={"type": float, "default": 60.0, "help": "seconds a case may run"},
+                   seed={"help": "seed of the random bytes"})
     parser.add_argument("--only", default="", help="run only the cases whose name contains this")
     parser.add_argument("--classes", default="file,value,record,image,output,option",
                         help="comma-separated classes of cases to run")
@@ -878,7 +879,7 @@ def main():
                              "WORK/report.md when --only or --classes runs a part of it)")
     parser.add_argument("--list", action="store_true", help="list the cases and exit")
     args = parser.parse_args()
-    prunesfm = str(Path(args.prunesfm).resolve()) if args.prunesfm else bs.rb.find_prunesfm(None)
+    prunesfm = str(bs.find_prunesfm(args.prunesfm))
     work = Path(args.work)
     base = Base(prunesfm, work, Path(args.shared))
     if not base.has_photos:

@@ -20,113 +20,32 @@ as NAME:ARGS, e.g. 'street_12m=street:--street_module_width 12'), so nothing dep
 script's work folder. Python 3 standard library only.
 """
 
-import array
 import json
-import random
-import shlex
-import shutil
-import sqlite3
 import sys
 from pathlib import Path
 
 sys.path.insert(0, str(Path(__file__).resolve().parent))
+import bench_colmap as bc  # noqa: E402
 import bench_support as bs  # noqa: E402
-import run_benchmarks as rb  # noqa: E402
 
 DEFAULT_SCENES = ["orbit_symmetric", "street", "street_12m=street:--street_module_width 12", "courtyard"]
-COLMAP_PAIR_ID_FACTOR = 2147483647  # pair_id = id1 * factor + id2, id1 < id2 (COLMAP's database)
 
 
-def parse_scene(spec):
-    label, _, rest = spec.partition("=")
-    scene, _, extra = rest.partition(":") if rest else (label, "", "")
-    return label, scene or label, shlex.split(extra)
+def evaluate_ours_on_database(args, prunesfm, database, gt, out, engine):
+    """`prunesfm run --database` with `engine`, its model evaluated against `gt`."""
+    stage = bs.run_ours_on_database(prunesfm, database, out / "images", out / "result", engine, out / "run.log",
+                                    args.timeout, ["--seed", args.seed, "--num_threads", args.threads],
+                                    output_flag="--output")
+    return bs.evaluate_against(prunesfm, bs.run_model(stage, out / "result"), gt, out, args.seed, args.timeout)
 
 
-def view_index(name):
-    """view_00012.jpg -> 12: the index of a synthetic view, as synthetic_scene.json and the labels use it."""
-    return int(Path(name).stem.split("_")[-1])
-
-
-def twin_dominated_pairs(scene_json, ratio):
-    stats = json.loads(Path(scene_json).read_text())["pairs"]
-    return {(p["i"], p["j"]) for p in stats if p["twin"] > ratio * p["true"]}, len(stats)
-
-
-def delete_pairs(database, pairs, tables=("matches",)):
-    """Deletes the rows of `pairs` (view indices = the number in view_NNNNN.jpg) from `tables`; returns
-    how many pairs had rows in the first of them."""
-    db = sqlite3.connect(database)
-    view_of = {image_id: view_index(name) for image_id, name in db.execute(
-        "SELECT image_id, name FROM images")}
-    deleted = 0
-    for (pair_id,) in list(db.execute(f"SELECT pair_id FROM {tables[0]}")):
-        a, b = divmod(pair_id, COLMAP_PAIR_ID_FACTOR)
-        views = tuple(sorted((view_of[a], view_of[b])))
-        if views in pairs:
-            for table in tables:
-                db.execute(f"DELETE FROM {table} WHERE pair_id = ?", (pair_id,))
-            deleted += 1
-    db.commit()
-    db.close()
-    return deleted
-
-
-def read_feature_landmarks(path):
-    """ground_truth/feature_landmarks.txt of `prunesfm synth`: view -> [(landmark, appearance)] per feature."""
-    result = {}
-    for line in Path(path).read_text().splitlines():
-        if not line or line.startswith("#"):
-            continue
-        fields = [int(x) for x in line.split()]
-        view, count = fields[0], fields[1]
-        result[view] = list(zip(fields[2:2 + 2 * count:2], fields[3:3 + 2 * count:2]))
-    return result
-
-
-def delete_twin_matches(database, features, keep_fraction=0.0, seed=0):
-    """Removes from every pair's putative matches those between two copies of one texture (different
-    landmarks, one appearance), each but a random `keep_fraction` of them (random.Random(seed));
-    returns (twin matches deleted, matches before)."""
-    rng = random.Random(seed)
-    db = sqlite3.connect(database)
-    view_of = {image_id: view_index(name) for image_id, name in db.execute(
-        "SELECT image_id, name FROM images")}
-    deleted = total = 0
-    for pair_id, rows, cols, blob in list(db.execute("SELECT pair_id, rows, cols, data FROM matches")):
-        a, b = divmod(pair_id, COLMAP_PAIR_ID_FACTOR)
-        pairs = array.array("I", blob)  # uint32 feature index pairs (COLMAP's matches blob)
-        labels_a, labels_b = features[view_of[a]], features[view_of[b]]
-        kept = array.array("I")
-        for k in range(rows):
-            (la, aa), (lb, ab) = labels_a[pairs[cols * k]], labels_b[pairs[cols * k + 1]]
-            if la >= 0 and lb >= 0 and la != lb and aa == ab and rng.random() >= keep_fraction:
-                continue
-            kept.extend(pairs[cols * k:cols * k + cols])
-        total += rows
-        deleted += rows - len(kept) // cols
-        db.execute("UPDATE matches SET rows = ?, data = ? WHERE pair_id = ?", (len(kept) // cols, kept.tobytes(), pair_id))
-    db.commit()
-    db.close()
-    return deleted, total
-
-
-def run_ours(args, prunesfm, database, gt, out, engine):
-    argv = [prunesfm, "run", "--database", database, "--image_path", out / "images", "--output", out / "result",
-            "--engine", engine, "--seed", args.seed, "--num_threads", args.threads]
-    stage = rb.run_stage("run", argv, out / "run.log", args.timeout)
-    model = out / "result" / "sparse" / "0" if stage["rc"] == 0 else None
-    return bs.evaluate_against(prunesfm, model, gt, out, args.seed, args.timeout)
-
-
-def run_colmap(args, prunesfm, database, pairs, gt, out):
+def evaluate_colmap_without_pairs(args, prunesfm, database, pairs, gt, out):
     """COLMAP's exhaustive_matcher verifies the full database (it would match again any pair whose
     matches are missing, undoing the oracle), then the oracle's pairs are deleted from its matches and
-    two-view geometries, then the mapper."""
+    two-view geometries, then the mapper; its model evaluated against `gt`."""
     t = str(args.threads)
-    rb.run_stage("match", [args.colmap, "exhaustive_matcher", "--database_path", database, "--SiftMatching.use_gpu", "0",
-                           "--SiftMatching.num_threads", t], out / "match.log", args.timeout, rb.colmap_env())
-    delete_pairs(database, pairs, ("two_view_geometries", "matches"))
+    bs.colmap_match("match", args.colmap, ["exhaustive_matcher"], database, out / "match.log", t, args.timeout)
+    bs.delete_pairs(database, pairs, ("two_view_geometries", "matches"))
     (out / "images").mkdir(parents=True, exist_ok=True)
     _, model = bs.colmap_mapper(args.colmap, database, out / "images", out, t, args.timeout, True)
     return bs.evaluate_against(prunesfm, model, gt, out, args.seed, args.timeout)
@@ -139,7 +58,7 @@ def main():
     parser.add_argument("--twin_ratio", type=float, default=1.0,
                         help="a pair is deleted when its twin matches exceed this times its true ones")
     args = parser.parse_args()
-    prunesfm = str(Path(args.prunesfm).resolve()) if args.prunesfm else str(rb.find_prunesfm(None))
+    prunesfm = str(bs.find_prunesfm(args.prunesfm))
     lines = bs.header_lines("Oracle pruning: the ceiling of pruning view-graph edges", sys.argv, prunesfm, args.colmap)
     lines += [f"Pairs whose twin matches exceed {args.twin_ratio:g}× their true matches (synthetic ground truth) "
               "are deleted from the database before GLOBAL and COLMAP's mapper run; GLOBAL and GLOBAL_PRUNED on "
@@ -151,49 +70,49 @@ def main():
               "|---|---|---|---|---|---|---|---|---|"]
     results = {}
     for spec in [s for s in args.scenes.split(",") if s]:
-        label, scene, extra = parse_scene(spec)
+        label, scene, extra = bs.parse_scene(spec)
         work = Path(args.work).resolve() / label
-        if work.exists():
-            shutil.rmtree(work)
-        work.mkdir(parents=True)
+        bs.fresh_folder(work)
         synth = work / "scene"
-        rb.synth_stage(prunesfm, scene, args.seed, synth, work / "synth.log", args.timeout, extra)
+        bs.synth_stage(prunesfm, scene, args.seed, synth, work / "synth.log", args.timeout, extra)
         gt = synth / "ground_truth" / "gt_cameras.txt"
         row = {}
         for engine in ("GLOBAL", "GLOBAL_PRUNED"):
             db = work / f"{engine}.db"
-            rb.copy_database(synth / "database.db", db)
-            row[engine] = run_ours(args, prunesfm, db, gt, work / engine, engine)
-        pairs, num_pairs = twin_dominated_pairs(synth / "ground_truth" / "synthetic_scene.json", args.twin_ratio)
+            bc.copy_database(synth / "database.db", db)
+            row[engine] = evaluate_ours_on_database(args, prunesfm, db, gt, work / engine, engine)
+        pairs, num_pairs = bs.twin_dominated_pairs(synth / "ground_truth" / "synthetic_scene.json", args.twin_ratio)
         oracle_db = work / "oracle.db"
-        rb.copy_database(synth / "database.db", oracle_db)
-        row["deleted"] = delete_pairs(oracle_db, pairs)
+        bc.copy_database(synth / "database.db", oracle_db)
+        row["deleted"] = bs.delete_pairs(oracle_db, pairs)
         row["pairs"] = num_pairs
-        row["oracle GLOBAL"] = run_ours(args, prunesfm, oracle_db, gt, work / "oracle_global", "GLOBAL")
+        row["oracle GLOBAL"] = evaluate_ours_on_database(args, prunesfm, oracle_db, gt, work / "oracle_global",
+                                                         "GLOBAL")
         # Twin matches also sit inside the pairs the oracle keeps (a view sees part of a copy its
         # neighbour sees of the next one); this row deletes those too: the ceiling of pruning edges
         # and matches, i.e. what the solve does once every wrong correspondence of a copy is gone.
         labels = synth / "ground_truth" / "feature_landmarks.txt"
         if labels.is_file():
             clean_db = work / "oracle_without_twin_matches.db"
-            rb.copy_database(oracle_db, clean_db)
-            row["twin matches deleted"], row["matches kept by the oracle"] = delete_twin_matches(
-                clean_db, read_feature_landmarks(labels))
-            row["oracle without twin matches GLOBAL"] = run_ours(args, prunesfm, clean_db, gt,
-                                                                 work / "oracle_without_twin_matches", "GLOBAL")
+            bc.copy_database(oracle_db, clean_db)
+            row["twin matches deleted"], row["matches kept by the oracle"] = bs.delete_twin_matches(
+                clean_db, bs.read_feature_landmarks(labels))
+            row["oracle without twin matches GLOBAL"] = evaluate_ours_on_database(
+                args, prunesfm, clean_db, gt, work / "oracle_without_twin_matches", "GLOBAL")
         else:
             print(f"oracle_pruning_bench: {labels} missing (a prunesfm older than its match labels): "
                   "no column without the twin matches", flush=True)
         if args.colmap:
             colmap_db = work / "oracle_colmap.db"
-            rb.copy_database(synth / "database.db", colmap_db)
-            row["oracle colmap"] = run_colmap(args, prunesfm, colmap_db, pairs, gt, work / "oracle_colmap")
+            bc.copy_database(synth / "database.db", colmap_db)
+            row["oracle colmap"] = evaluate_colmap_without_pairs(args, prunesfm, colmap_db, pairs, gt,
+                                                                 work / "oracle_colmap")
             # The same verified pairs through our engine (`run --database` uses a database's two-view
             # geometries as they are): tells our verification's share of a failure from the solve's.
             ours_on_colmap_db = work / "oracle_colmap_geometries.db"
-            rb.copy_database(colmap_db, ours_on_colmap_db)
-            row["oracle GLOBAL on colmap geometries"] = run_ours(args, prunesfm, ours_on_colmap_db, gt,
-                                                                 work / "oracle_global_colmap_geometries", "GLOBAL")
+            bc.copy_database(colmap_db, ours_on_colmap_db)
+            row["oracle GLOBAL on colmap geometries"] = evaluate_ours_on_database(
+                args, prunesfm, ours_on_colmap_db, gt, work / "oracle_global_colmap_geometries", "GLOBAL")
         results[label] = row
 
         def cell(r):

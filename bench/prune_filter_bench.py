@@ -12,14 +12,12 @@ Writes bench/sections/prune_filter.md. Python 3 standard library only.
 """
 
 import json
-import shutil
-import sqlite3
 import sys
 from pathlib import Path
 
 sys.path.insert(0, str(Path(__file__).resolve().parent))
+import bench_colmap as bc  # noqa: E402
 import bench_support as bs  # noqa: E402
-import run_benchmarks as rb  # noqa: E402
 
 SYNTHETIC = ["orbit_symmetric", "street", "courtyard", "clean"]
 DATASETS = {"castle-P19": "strecha/castle-P19"}
@@ -36,13 +34,6 @@ def scene_inputs(args, scene):
     return bench / scene / "shared" / "database.db", folder / "images", folder / "gt_cameras.txt", None
 
 
-def verified_pairs(db_path):
-    with sqlite3.connect(str(db_path)) as db:
-        ids = [pid for (pid,) in db.execute("SELECT pair_id FROM two_view_geometries WHERE rows > 0")]
-    db.close()
-    return {(pid // rb.COLMAP_PAIR_BASE, pid % rb.COLMAP_PAIR_BASE) for pid in ids}
-
-
 def spurious_pairs(scene_json):
     """Synthetic truth: a pair whose matches are mostly between twin copies (twin > true) has a
     wrong two-view geometry. View ids = COLMAP image ids in the synthetic databases."""
@@ -53,18 +44,16 @@ def spurious_pairs(scene_json):
 def run_scene(args, prunesfm, colmap, scene):
     db_in, images, gt, scene_json = scene_inputs(args, scene)
     row = {"scene": scene, "status": "ok"}
-    if rb.num_verified_pairs(db_in) == 0 or not gt.is_file():
+    if bc.num_verified_pairs(db_in) == 0 or not gt.is_file():
         row["status"] = f"input missing: {db_in} (run bench/run_benchmarks.py --prepare_only and its colmap row)"
         return row
     out = Path(args.work) / scene
-    if out.exists():
-        shutil.rmtree(out)
-    out.mkdir(parents=True)
+    bs.fresh_folder(out)
     if images is None:
         images = out / "images"  # synthetic: the mapper needs the folder, not images
         images.mkdir()
     original, pruned = out / "original.db", out / "pruned.db"
-    rb.copy_database(db_in, original)
+    bc.copy_database(db_in, original)
     t = str(args.threads)
     stage, report = bs.prune_database(prunesfm, original, pruned, out, t, str(args.seed), args.timeout)
     row["prune_s"] = stage["seconds"]
@@ -73,7 +62,7 @@ def run_scene(args, prunesfm, colmap, scene):
         row["status"] = f"prune failed: {stage.get('error')}"
         return row
     row["prune_phases"] = report["filter"]["seconds"]
-    before, after = verified_pairs(original), verified_pairs(pruned)
+    before, after = bc.verified_pairs(original), bc.verified_pairs(pruned)
     removed = before - after
     row["pairs_before"], row["pairs_after"] = len(before), len(after)
     if scene_json is not None and scene_json.is_file():
@@ -138,7 +127,7 @@ def parse_args(argv):
 
 def main(argv):
     args = parse_args(argv)
-    prunesfm = rb.find_prunesfm(args.prunesfm)
+    prunesfm = bs.find_prunesfm(args.prunesfm)
     if not args.colmap:
         sys.exit("prune_filter_bench: needs Debian's colmap on the PATH (or --colmap)")
     scenes = [s for s in args.scenes.split(",") if s]

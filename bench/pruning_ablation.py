@@ -26,7 +26,6 @@ from pathlib import Path
 
 sys.path.insert(0, str(Path(__file__).resolve().parent))
 import bench_support as bs  # noqa: E402
-import run_benchmarks as rb  # noqa: E402
 
 # (label, engine, extra `prunesfm run` arguments). The first GLOBAL_PRUNED row is the reference.
 CONFIGS = [
@@ -85,15 +84,15 @@ CONFIGS = [
 def run_config(args, prunesfm, database, gt, images, label, engine, extra, index):
     out = Path(args.work) / f"{index:02d}"
     out.mkdir(parents=True, exist_ok=True)
-    argv = [prunesfm, "run", "--database", database, "--image_path", images or out / "images", "--output", out / "result",
-            "--engine", engine, "--seed", args.seed, "--num_threads", args.threads, *extra]
     start = time.monotonic()
-    stage = rb.run_stage("run", argv, out / "run.log", args.timeout)
+    stage = bs.run_ours_on_database(prunesfm, database, images or out / "images", out / "result", engine,
+                                    out / "run.log", args.timeout,
+                                    ["--seed", args.seed, "--num_threads", args.threads, *extra], output_flag="--output")
     seconds = time.monotonic() - start
     row = {"label": label, "engine": engine, "args": " ".join(map(str, extra)), "seconds": round(seconds, 1),
            "rc": stage["rc"]}
-    model = out / "result" / "sparse" / "0" if stage["rc"] == 0 else None
-    row.update(bs.evaluate_against(prunesfm, model, gt, out, args.seed, args.timeout))
+    row.update(bs.evaluate_against(prunesfm, bs.run_model(stage, out / "result"), gt, out, args.seed,
+                                   args.timeout))
     report = out / "result" / "pruning_report.json"
     if stage["rc"] == 0 and report.is_file():
         pruning = json.loads(report.read_text())
@@ -114,7 +113,7 @@ def main():
     parser.add_argument("--image_path", help="with --database: the images")
     parser.add_argument("--fragment", default="pruning_ablation", help="bench/sections/<fragment>.md")
     args = parser.parse_args()
-    prunesfm = str(Path(args.prunesfm).resolve()) if args.prunesfm else str(rb.find_prunesfm(None))
+    prunesfm = str(bs.find_prunesfm(args.prunesfm))
     if args.database:
         if not args.ground_truth or not args.image_path:
             sys.exit("pruning_ablation: --database needs --ground_truth and --image_path")

@@ -14,8 +14,8 @@ import sys
 from pathlib import Path
 
 sys.path.insert(0, str(Path(__file__).resolve().parent))
+import bench_colmap as bc  # noqa: E402
 import bench_support as bs  # noqa: E402
-import run_benchmarks as rb  # noqa: E402
 
 ENGINES = ["GLOBAL", "GLOBAL_PRUNED"]
 
@@ -26,7 +26,7 @@ def prepare(args, prunesfm, work):
     synth_args = ["--scene", "sequential_large", "--num_views", str(args.num_views), "--seed", str(args.seed)]
     if not (args.reuse and stamp.is_file() and json.loads(stamp.read_text()) == synth_args
             and (scene / "database.db").is_file()):
-        stage = rb.synth_stage(prunesfm, "sequential_large", args.seed, scene, work / "synth.log", args.timeout,
+        stage = bs.synth_stage(prunesfm, "sequential_large", args.seed, scene, work / "synth.log", args.timeout,
                                ["--num_views", args.num_views], args.threads)
         if stage["rc"] != 0:
             sys.exit(f"pruning_cost_bench: synth failed: {stage.get('error')}")
@@ -39,9 +39,9 @@ def run_engine(args, prunesfm, scene, engine, work):
     out = work / engine
     if out.exists():
         shutil.rmtree(out)
-    stage = rb.run_stage("run", [prunesfm, "run", "--database", scene / "database.db", "--image_path",
-                                 scene / "images", "--output_path", out, "--engine", engine, "--num_threads",
-                                 args.threads, "--solver_threads", args.threads, "--seed", args.seed], work / f"{engine}.log", args.timeout)
+    stage = bs.run_ours_on_database(prunesfm, scene / "database.db", scene / "images", out, engine,
+                                    work / f"{engine}.log", args.timeout,
+                                    ["--num_threads", args.threads, "--solver_threads", args.threads, "--seed", args.seed])
     row = {"engine": engine, "seconds": stage["seconds"], "peak_mb": stage["peak_mb"], "rc": stage["rc"]}
     if stage["rc"] != 0:
         row["error"] = stage.get("error")
@@ -52,7 +52,7 @@ def run_engine(args, prunesfm, scene, engine, work):
     report_path = out / "pruning_report.json"
     if report_path.is_file():
         row["pruning"] = summarize_pruning(json.loads(report_path.read_text()))
-    model, _ = rb.largest_model(out / "sparse")
+    model, _ = bc.largest_model(out / "sparse")
     row["eval"] = bs.evaluate_against(prunesfm, model, scene / "ground_truth" / "gt_cameras.txt", out,
                                       str(args.seed), args.timeout)
     return row
@@ -142,7 +142,7 @@ def parse_args(argv):
 def main(argv):
     args = parse_args(argv)
     args.threads, args.seed = str(args.threads), str(args.seed)
-    prunesfm = rb.find_prunesfm(args.prunesfm)
+    prunesfm = bs.find_prunesfm(args.prunesfm)
     work = Path(args.work).resolve()
     work.mkdir(parents=True, exist_ok=True)
     if args.rewrite_report:

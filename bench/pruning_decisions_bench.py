@@ -21,8 +21,6 @@ from pathlib import Path
 
 sys.path.insert(0, str(Path(__file__).resolve().parent))
 import bench_support as bs  # noqa: E402
-import oracle_pruning_bench as ob  # noqa: E402
-import run_benchmarks as rb  # noqa: E402
 
 DEFAULT_SCENES = ["street", "courtyard", "orbit_symmetric",
                   "sequential_large_250=sequential_large:--num_views 250",
@@ -43,11 +41,11 @@ def pair_classes(report):
 
 def count_decisions(run_dir, scene_json):
     """Counter of (decision, 'true'|'twin', 'kept'|'removed') over the verified edges of a run; twin =
-    twin-dominated by the oracle's rule (oracle_pruning_bench.twin_dominated_pairs)."""
-    twin_pairs, _ = ob.twin_dominated_pairs(scene_json, 1.0)
+    twin-dominated by the oracle's rule (bench_support.twin_dominated_pairs)."""
+    twin_pairs, _ = bs.twin_dominated_pairs(scene_json, 1.0)
     graph = json.loads((run_dir / "view_graph.json").read_text())
     report = json.loads((run_dir / "pruning_report.json").read_text())
-    index_of = {v["view_id"]: ob.view_index(v["image"]) for v in graph["views"]}
+    index_of = {v["view_id"]: bs.view_index(v["image"]) for v in graph["views"]}
     subgraph_of = {v["view_id"]: v["subgraph"] for v in graph["views"]}
     classes = pair_classes(report)
     counts = Counter()
@@ -80,7 +78,7 @@ def main():
     parser.add_argument("--run_args", default="", help="extra `prunesfm run` options, e.g. '--prune_audit_enabled true'")
     parser.add_argument("--reuse", action="store_true", help="keep a scene already generated in the work folder")
     args = parser.parse_args()
-    prunesfm = str(Path(args.prunesfm).resolve()) if args.prunesfm else str(rb.find_prunesfm(None))
+    prunesfm = str(bs.find_prunesfm(args.prunesfm))
     work = Path(args.work).resolve()
     work.mkdir(parents=True, exist_ok=True)
     lines = bs.header_lines("Where the pruning keeps twin edges: its decisions against the synthetic labels",
@@ -92,19 +90,19 @@ def main():
               "subgraph, or the subgraph pair's `status` (aligned: a RANSAC hypothesis; rotation_only: none "
               "supported, the largest rotation-consistent set) and its trusted-forest decision (docs/pruning.md)."]
     for spec in [s for s in args.scenes.split(",") if s]:
-        label, scene_name, extra = ob.parse_scene(spec)
+        label, scene_name, extra = bs.parse_scene(spec)
         scene = work / label
         if not (args.reuse and (scene / "database.db").is_file()):
-            rb.synth_stage(prunesfm, scene_name, args.seed, scene, work / f"{label}_synth.log", args.timeout, extra)
+            bs.synth_stage(prunesfm, scene_name, args.seed, scene, work / f"{label}_synth.log", args.timeout, extra)
         out = work / f"{label}_run"
-        argv = [prunesfm, "run", "--database", scene / "database.db", "--image_path", scene / "images",
-                "--output", out, "--engine", "GLOBAL_PRUNED", "--seed", args.seed, "--num_threads", args.threads,
-                *run_args]
-        stage = rb.run_stage("run", argv, work / f"{label}_run.log", args.timeout)
+        stage = bs.run_ours_on_database(prunesfm, scene / "database.db", scene / "images", out, "GLOBAL_PRUNED",
+                                        work / f"{label}_run.log", args.timeout,
+                                        ["--seed", args.seed, "--num_threads", args.threads, *run_args],
+                                        output_flag="--output")
         if stage["rc"] != 0:
             lines += ["", f"**{label}**: `prunesfm run` failed (rc {stage['rc']}, log {work / (label + '_run.log')})."]
             continue
-        evaluation = bs.evaluate_against(prunesfm, out / "sparse" / "0", scene / "ground_truth" / "gt_cameras.txt",
+        evaluation = bs.evaluate_against(prunesfm, bs.run_model(stage, out), scene / "ground_truth" / "gt_cameras.txt",
                                          out, args.seed, args.timeout)
         counts = count_decisions(out, scene / "ground_truth" / "synthetic_scene.json")
         scene_table = scene_lines(label, counts, evaluation)

@@ -12,24 +12,21 @@ measured without /usr/bin/time. See bench/README.md for what each stage contains
 """
 
 import argparse
-import datetime
 import json
 import math
 import os
-import platform
 import re
 import shlex
-import shutil
-import signal
 import sqlite3
 import struct
 import subprocess
 import sys
-import threading
-import time
 from pathlib import Path
 
-REPO = Path(__file__).resolve().parent.parent
+sys.path.insert(0, str(Path(__file__).resolve().parent))
+import bench_colmap as bc  # noqa: E402
+import bench_support as bs  # noqa: E402
+
 SMALL_SYNTHETIC = ["orbit_symmetric", "street", "courtyard", "clean"]
 LARGE_SYNTHETIC = "sequential_large"
 # Datasets with ground truth: scene name -> folder under <shared>/datasets.
@@ -41,88 +38,12 @@ DATASETS = {
 }
 OUR_ENGINES = ["GLOBAL", "GLOBAL_PRUNED"]
 ALL_ENGINES = OUR_ENGINES + ["colmap"]
-THRESHOLDS = [3, 5, 10]
 SMOKE_SYNTH_ARGS = ["--num_views", "8"]
-COLMAP_CAMERA_MODEL = "SIMPLE_RADIAL"
-# COLMAP's images and pair ids: pair_id = image_id1 * 2147483647 + image_id2 (image_id1 < image_id2).
-COLMAP_PAIR_BASE = 2147483647
 
 
 # ----------------------------------------------------------------------------------------------
-# Running one stage
+# prunesfm, evaluation, databases (the rest is in bench_support.py and bench_colmap.py)
 # ----------------------------------------------------------------------------------------------
-
-def run_stage(name, argv, log_path, timeout_s, env=None):
-    """Runs argv with stdout+stderr to log_path; returns the stage record (wall s, peak MB, rc)."""
-    log_path.parent.mkdir(parents=True, exist_ok=True)
-    print(f"  [{name}] {' '.join(shlex.quote(str(a)) for a in argv)}", flush=True)
-    argv = [str(a) for a in argv]
-    with open(log_path, "wb") as log, open(os.devnull, "rb") as devnull:
-        start = time.monotonic()
-        try:
-            pid = os.posix_spawnp(argv[0], argv, env if env is not None else dict(os.environ),
-                                  file_actions=[(os.POSIX_SPAWN_DUP2, devnull.fileno(), 0),
-                                                (os.POSIX_SPAWN_DUP2, log.fileno(), 1),
-                                                (os.POSIX_SPAWN_DUP2, log.fileno(), 2)])
-        except OSError as e:
-            return {"name": name, "seconds": 0.0, "peak_mb": 0.0, "rc": 127, "log": str(log_path),
-                    "error": f"cannot start {argv[0]}: {e}"}
-        timed_out = threading.Event()
-
-        def kill():
-            timed_out.set()
-            try:
-                os.kill(pid, signal.SIGKILL)
-            except ProcessLookupError:
-                pass
-
-        timer = threading.Timer(timeout_s, kill)
-        timer.start()
-        try:
-            _, status, usage = os.wait4(pid, 0)
-        finally:
-            timer.cancel()
-        seconds = time.monotonic() - start
-    rc = os.waitstatus_to_exitcode(status)
-    record = {"name": name, "seconds": round(seconds, 2), "peak_mb": round(usage.ru_maxrss / 1024.0, 1),
-              "cpu_s": round(usage.ru_utime + usage.ru_stime, 2), "rc": rc, "log": str(log_path)}
-    if timed_out.is_set():
-        record["error"] = f"killed after the {timeout_s} s timeout"
-    elif rc != 0:
-        record["error"] = f"exit code {rc}: {last_line(log_path)}"
-    print(f"  [{name}] {seconds:.1f} s, peak {record['peak_mb']:.0f} MB, rc {rc}", flush=True)
-    return record
-
-
-def last_line(path):
-    try:
-        lines = [l.strip() for l in Path(path).read_text(errors="replace").splitlines() if l.strip()]
-    except OSError:
-        return ""
-    return lines[-1][:200] if lines else ""
-
-
-def colmap_env():
-    env = dict(os.environ)
-    env["QT_QPA_PLATFORM"] = "offscreen"
-    return env
-
-
-# ----------------------------------------------------------------------------------------------
-# Tools and machine
-# ----------------------------------------------------------------------------------------------
-
-def find_prunesfm(explicit):
-    if explicit:
-        return Path(explicit).resolve()
-    preferred = REPO / "build" / "release" / "src" / "software" / "prunesfm"
-    if preferred.is_file():
-        return preferred
-    candidates = [p for p in REPO.glob("build*/**/src/software/prunesfm") if p.is_file() and os.access(p, os.X_OK)]
-    if not candidates:
-        sys.exit("run_benchmarks: no prunesfm executable under build*/; build it or pass --prunesfm PATH")
-    return max(candidates, key=lambda p: p.stat().st_mtime)  # the most recently built one
-
 
 def prunesfm_capabilities(prunesfm):
     """Which of our engines can run: `prunesfm --help` must list the `run` subcommand."""
@@ -135,65 +56,6 @@ def prunesfm_capabilities(prunesfm):
     return {"run": has_run, "num_threads": "--num_threads" in run_help, "intrinsics_options": refine}
 
 
-def colmap_version(colmap):
-    if not colmap:
-        return None
-    out = subprocess.run([colmap, "-h"], capture_output=True, text=True, env=colmap_env()).stdout
-    return out.splitlines()[0].strip() if out else "unknown"
-
-
-def machine_info():
-    cpu = "unknown"
-    try:
-        for line in Path("/proc/cpuinfo").read_text().splitlines():
-            if line.startswith("model name"):
-                cpu = line.split(":", 1)[1].strip()
-                break
-    except OSError:
-        pass
-    mem_gb = None
-    try:
-        for line in Path("/proc/meminfo").read_text().splitlines():
-            if line.startswith("MemTotal:"):
-                mem_gb = round(int(line.split()[1]) / 1024 / 1024, 1)
-    except OSError:
-        pass
-    commit = subprocess.run(["git", "-C", str(REPO), "rev-parse", "--short", "HEAD"],
-                            capture_output=True, text=True).stdout.strip()
-    return {"date": datetime.datetime.now(datetime.timezone.utc).strftime("%Y-%m-%d %H:%M UTC"),
-            "nproc": os.cpu_count(), "cpu": cpu, "mem_gb": mem_gb, "kernel": platform.release(),
-            "python": platform.python_version(), "git_commit": commit,
-            "loadavg_start": " ".join(f"{x:.2f}" for x in os.getloadavg())}
-
-
-# ----------------------------------------------------------------------------------------------
-# Models and evaluation
-# ----------------------------------------------------------------------------------------------
-
-def num_registered(model_dir):
-    images_bin = model_dir / "images.bin"
-    if images_bin.is_file():
-        with open(images_bin, "rb") as f:
-            return struct.unpack("<Q", f.read(8))[0]
-    images_txt = model_dir / "images.txt"
-    if images_txt.is_file():
-        lines = [l for l in images_txt.read_text().splitlines() if l and not l.startswith("#")]
-        return len(lines) // 2
-    return 0
-
-
-def largest_model(sparse_dir):
-    """COLMAP's mapper writes sparse/0, sparse/1, ...: the model with most registered images."""
-    if not sparse_dir.is_dir():
-        return None, 0
-    models = [d for d in sorted(sparse_dir.iterdir()) if d.is_dir() and
-              ((d / "cameras.bin").is_file() or (d / "cameras.txt").is_file())]
-    if not models:
-        return None, 0
-    best = max(models, key=lambda d: (num_registered(d), -int(d.name) if d.name.isdigit() else 0))
-    return best, len(models)
-
-
 def count_gt_images(gt_path):
     return sum(1 for l in Path(gt_path).read_text().splitlines() if l.strip() and not l.startswith("#"))
 
@@ -201,81 +63,21 @@ def count_gt_images(gt_path):
 def evaluate(prunesfm, model_dir, gt_path, out_dir, seed, timeout_s):
     """Evaluates a model; no model counts as nothing registered (every pair failed: AUC 0)."""
     num_gt = count_gt_images(gt_path)
-    result = {"registered": 0, "num_gt": num_gt, "auc": {str(t): 0.0 for t in THRESHOLDS},
+    result = {"registered": 0, "num_gt": num_gt, "auc": {str(t): 0.0 for t in bs.THRESHOLDS},
               "median_rotation_error_deg": None, "median_position_error": None}
     if model_dir is None:
         return result, None
-    json_path = out_dir / "evaluation.json"
-    stage = run_stage("evaluate", [prunesfm, "evaluate", "--estimate", model_dir, "--ground_truth", gt_path,
-                                   "--thresholds", ",".join(map(str, THRESHOLDS)), "--seed", seed,
-                                   "--json", json_path], out_dir / "evaluate.log", timeout_s)
-    if stage["rc"] != 0:
+    report, stage = bs.evaluate_model(prunesfm, model_dir, gt_path, out_dir, seed, timeout_s)
+    if report is None:
         # A model sharing no image name with the ground truth is also "nothing registered".
         return result, stage
-    report = json.loads(json_path.read_text())
     result["registered"] = report["num_registered_images"]
     result["num_gt"] = report["num_ground_truth_images"]
-    for entry in report["auc"]:
-        result["auc"][f"{entry['threshold_deg']:g}"] = round(entry["auc_percent"], 2)
+    result["auc"].update(bs.report_auc(report))
     if report.get("alignment"):
         result["median_rotation_error_deg"] = round(report["alignment"]["median_rotation_error_deg"], 3)
         result["median_position_error"] = report["alignment"]["median_position_error"]
     return result, stage
-
-
-# ----------------------------------------------------------------------------------------------
-# Scenes
-# ----------------------------------------------------------------------------------------------
-
-def copy_database(src, dst):
-    """Copies an SQLite database with its pending write-ahead log (COLMAP 3.8 leaves its changes in
-    database.db-wal at exit: copying the file alone loses them)."""
-    if Path(dst).exists():
-        Path(dst).unlink()
-    with sqlite3.connect(str(src)) as source, sqlite3.connect(str(dst)) as target:
-        source.backup(target)
-    source.close()
-    target.close()
-
-
-def colmap_database_pairs(db_path):
-    with sqlite3.connect(str(db_path)) as db:
-        names = dict(db.execute("SELECT image_id, name FROM images"))
-        pairs = [(pid // COLMAP_PAIR_BASE, pid % COLMAP_PAIR_BASE)
-                 for (pid,) in db.execute("SELECT pair_id FROM matches WHERE rows > 0")]
-    return names, pairs
-
-
-def colmap_verification_argv(colmap, db, pair_list):
-    """COLMAP 3.8's command that verifies the putative matches a synthetic database holds (its
-    matchers keep a pair's existing matches and only verify them): exhaustive_matcher when every
-    pair is there, else matches_importer with the pairs written to `pair_list` (exhaustive would
-    match all N^2 pairs of a sequential scene)."""
-    names, pairs = colmap_database_pairs(db)
-    n = len(names)
-    if len(pairs) == n * (n - 1) // 2:
-        return [colmap, "exhaustive_matcher", "--database_path", db]
-    Path(pair_list).write_text("".join(f"{names[a]} {names[b]}\n" for a, b in pairs))
-    return [colmap, "matches_importer", "--database_path", db, "--match_list_path", pair_list, "--match_type", "pairs"]
-
-
-def num_verified_pairs(db_path):
-    """Pairs with inliers in two_view_geometries, 0 unless every matched pair has been verified (an
-    interrupted COLMAP run is not reused) or if the database is missing."""
-    if not Path(db_path).is_file():
-        return 0
-    try:
-        # A read-write connection: closing it folds a pending write-ahead log into the file.
-        db = sqlite3.connect(str(db_path))
-        try:
-            verified, inliers = db.execute(
-                "SELECT COUNT(*), COALESCE(SUM(rows > 0), 0) FROM two_view_geometries").fetchone()
-            matched = db.execute("SELECT COUNT(*) FROM matches").fetchone()[0]
-        finally:
-            db.close()
-    except sqlite3.Error:
-        return 0
-    return inliers if verified >= matched else 0
 
 
 def colmap_camera_summary(db_path):
@@ -284,18 +86,9 @@ def colmap_camera_summary(db_path):
     return {"num_cameras": len(rows), "prior_focal_from_exif": any(r[3] for r in rows)}
 
 
-def synth_stage(prunesfm, scene, seed, out, log_path, timeout_s, extra=(), threads=None):
-    """`prunesfm synth --scene SCENE --seed SEED --output OUT [--num_threads N] EXTRA...` as a stage.
-    On success it also makes OUT/images: synth writes no image files, but `prunesfm run --database`
-    and COLMAP's mapper want the folder to exist."""
-    argv = [prunesfm, "synth", "--scene", scene, "--seed", seed, "--output", out]
-    if threads is not None:
-        argv += ["--num_threads", threads]
-    stage = run_stage("synth", argv + list(extra), log_path, timeout_s)
-    if stage["rc"] == 0:
-        (Path(out) / "images").mkdir(parents=True, exist_ok=True)
-    return stage
-
+# ----------------------------------------------------------------------------------------------
+# Scenes
+# ----------------------------------------------------------------------------------------------
 
 def prepare_synthetic(args, prunesfm, scene, num_views, work):
     """`prunesfm synth`: features + putative matches (database.db) + ground truth."""
@@ -316,7 +109,7 @@ def prepare_synthetic(args, prunesfm, scene, num_views, work):
         return {"key": key, "kind": "synthetic", "database": out / "database.db", "images": out / "images",
                 "gt": gt, "prep": prep, "shared_stages": [], "ok": True, "error": None,
                 "synth_args": synth_args, "reused": True}
-    stage = synth_stage(prunesfm, scene, args.seed, out, work / f"{key}.synth.log", args.timeout, extra, args.threads)
+    stage = bs.synth_stage(prunesfm, scene, args.seed, out, work / f"{key}.synth.log", args.timeout, extra, args.threads)
     return {"key": key, "kind": "synthetic", "database": out / "database.db", "images": out / "images",
             "gt": out / "ground_truth" / "gt_cameras.txt", "prep": [stage], "shared_stages": [],
             "ok": stage["rc"] == 0, "error": stage.get("error"), "synth_args": synth_args, "reused": False}
@@ -338,7 +131,7 @@ def prepare_dataset(args, scene, colmap, work):
     out = work / scene / "shared"
     db = out / "database.db"
     previous = args.previous_meta.get("scenes", {}).get(scene) if args.reuse else None
-    if previous and previous.get("shared_stages") and num_verified_pairs(db) > 0:
+    if previous and previous.get("shared_stages") and bc.num_verified_pairs(db) > 0:
         # --reuse: COLMAP's features and verified matches of the earlier run are still in --work; their
         # stage times are those measured then (marked as carried in the report).
         info["shared_stages"] = [dict(s, carried=s.get("carried") or args.previous_date) for s in previous["shared_stages"]]
@@ -348,24 +141,15 @@ def prepare_dataset(args, scene, colmap, work):
         info["reused"] = True
         print(f"  [features, match] reused {db} (from the run of {args.previous_date})", flush=True)
         return info
-    if out.exists():
-        shutil.rmtree(out)
-    out.mkdir(parents=True)
-    t = str(args.threads)
-    extract = run_stage("features", [colmap, "feature_extractor", "--database_path", db, "--image_path", images,
-                                     "--ImageReader.single_camera", "1",
-                                     "--ImageReader.camera_model", COLMAP_CAMERA_MODEL,
-                                     "--SiftExtraction.use_gpu", "0", "--SiftExtraction.num_threads", t,
-                                     "--SiftExtraction.max_image_size", args.max_image_size],
-                        out / "features.log", args.timeout, colmap_env())
+    bs.fresh_folder(out)
+    extract = bs.colmap_features("features", colmap, db, images, out / "features.log", args.threads,
+                                 args.max_image_size, args.timeout)
     info["shared_stages"].append(extract)
     if extract["rc"] != 0:
         info["error"] = "feature_extractor: " + extract.get("error", "")
         return info
     info["camera"] = colmap_camera_summary(db)
-    match = run_stage("match", [colmap, "exhaustive_matcher", "--database_path", db,
-                                "--SiftMatching.use_gpu", "0", "--SiftMatching.num_threads", t],
-                      out / "match.log", args.timeout, colmap_env())
+    match = bs.colmap_match("match", colmap, ["exhaustive_matcher"], db, out / "match.log", args.threads, args.timeout)
     info["shared_stages"].append(match)
     if match["rc"] != 0:
         info["error"] = "exhaustive_matcher: " + match.get("error", "")
@@ -379,7 +163,9 @@ def prepare_dataset(args, scene, colmap, work):
 # Engines
 # ----------------------------------------------------------------------------------------------
 
-def run_colmap(args, prunesfm, colmap, scene, work):
+def run_colmap_on_scene(args, colmap, scene, work):
+    """The colmap row of a scene: on its own database copy, COLMAP's verification of the synthetic
+    putative matches (`match`; with --reuse the earlier run's verified copy), then its mapper."""
     out = work / scene["key"] / "colmap"
     verified = work / scene["key"] / "colmap_verified.db"  # COLMAP's verified synthetic database, kept for --reuse
     previous_match = None
@@ -387,40 +173,32 @@ def run_colmap(args, prunesfm, colmap, scene, work):
         previous_row = next((r for r in args.previous_rows if r["scene"] == scene["key"] and r["engine"] == "colmap"
                              and r.get("status") == "ok" and not r.get("carried_from")), None)
         previous_match = next((s for s in (previous_row or {}).get("stages", []) if s["name"] == "match"), None)
-        if previous_match and num_verified_pairs(verified) == 0 and num_verified_pairs(out / "database.db") > 0:
-            copy_database(out / "database.db", verified)  # the earlier run's copy, verified by its `match`
-        if num_verified_pairs(verified) == 0:
+        if previous_match and bc.num_verified_pairs(verified) == 0 and bc.num_verified_pairs(out / "database.db") > 0:
+            bc.copy_database(out / "database.db", verified)  # the earlier run's copy, verified by its `match`
+        if bc.num_verified_pairs(verified) == 0:
             previous_match = None
-    if out.exists():
-        shutil.rmtree(out)
-    out.mkdir(parents=True)
+    bs.fresh_folder(out)
     db = out / "database.db"
     stages = []
     t = str(args.threads)
     if previous_match is not None:
         # --reuse: only the mapper is timed again, on the database COLMAP verified in the earlier run.
-        copy_database(verified, db)
+        bc.copy_database(verified, db)
         stages.append(dict(previous_match, carried=previous_match.get("carried") or args.previous_date))
         print(f"  [match] reused {verified} (from the run of {args.previous_date})", flush=True)
     else:
-        copy_database(scene["database"], db)
+        bc.copy_database(scene["database"], db)
     if scene["kind"] == "synthetic" and previous_match is None:
         # The database holds putative matches but no two-view geometries. COLMAP 3.8's matchers keep
         # the matches of a pair that already has them and only verify them geometrically.
-        argv = colmap_verification_argv(colmap, db, out / "pairs.txt")
-        stages.append(run_stage("match", argv + ["--SiftMatching.use_gpu", "0", "--SiftMatching.num_threads", t],
-                                out / "match.log", args.timeout, colmap_env()))
+        stages.append(bs.verify_synthetic_matches("match", colmap, db, out / "pairs.txt", out / "match.log", t,
+                                                  args.timeout))
         if stages[-1]["rc"] != 0:
             return stages, None, stages[-1]["error"]
-        copy_database(db, verified)
-    sparse = out / "sparse"
-    sparse.mkdir()
-    mapper = [colmap, "mapper", "--database_path", db, "--image_path", scene["images"], "--output_path", sparse,
-              "--Mapper.num_threads", t]
-    if scene["kind"] == "synthetic":
-        mapper += ["--Mapper.extract_colors", "0"]  # there are no images to take colours from
-    stages.append(run_stage("map", mapper, out / "map.log", args.timeout, colmap_env()))
-    model, num_models = largest_model(sparse)
+        bc.copy_database(db, verified)
+    stage, model = bs.colmap_mapper(colmap, db, scene["images"], out, t, args.timeout, scene["kind"] == "synthetic")
+    stages.append(stage)
+    _, num_models = bc.largest_model(out / "sparse")
     note = None if num_models <= 1 else f"{num_models} models, the largest evaluated"
     if stages[-1]["rc"] != 0:
         note = stages[-1]["error"]
@@ -440,23 +218,20 @@ def set_known_intrinsics(db_path, gt_path):
     return fx, fy, cx, cy
 
 
-def run_ours(args, prunesfm, caps, engine, scene, work):
+def run_ours_on_scene(args, prunesfm, caps, engine, scene, work):
+    """A row of ours (an engine or a --variant) on a scene: `prunesfm run` on its own database copy
+    (with the known K for --known_k), the breakdown of its timings.json, the largest model."""
     label, engine, extra = engine, *args.variants.get(engine, (engine, []))
     out = work / scene["key"] / label
-    if out.exists():
-        shutil.rmtree(out)
-    out.mkdir(parents=True)
+    bs.fresh_folder(out)
     db = out / "database.db"
-    copy_database(scene["database"], db)
+    bc.copy_database(scene["database"], db)
     if label in args.known_k:
         set_known_intrinsics(db, scene["gt"])
     result_dir = out / "result"
-    argv = [prunesfm, "run", "--database", db, "--image_path", scene["images"], "--output_path", result_dir,
-            "--engine", engine]
-    if caps["num_threads"]:
-        argv += ["--num_threads", args.threads]
-    argv += extra
-    stage = run_stage("run", argv, out / "run.log", args.timeout)
+    options = (["--num_threads", args.threads] if caps["num_threads"] else []) + extra
+    stage = bs.run_ours_on_database(prunesfm, db, scene["images"], result_dir, engine, out / "run.log", args.timeout,
+                                    options)
     # Optional: the engine's own breakdown in result/timings.json, "stages" either {"name": seconds, ...}
     # or [{"stage": name, "seconds": s}, ...] (what `prunesfm run` writes).
     timings = result_dir / "timings.json"
@@ -468,7 +243,7 @@ def run_ours(args, prunesfm, caps, engine, scene, work):
             stage["breakdown"] = {k: round(float(v), 2) for k, v in listed.items()}
         except (ValueError, KeyError, TypeError, AttributeError):
             pass
-    model, num_models = largest_model(result_dir / "sparse")
+    model, num_models = bc.largest_model(result_dir / "sparse")
     note = stage.get("error") or (None if num_models <= 1 else f"{num_models} models, the largest evaluated")
     return [stage], model, note
 
@@ -529,14 +304,11 @@ def fold_verdict(auc10):
     return "partial"
 
 
-SECTIONS_DIR = REPO / "bench" / "sections"
-
-
 def section_fragments():
     """The sections other benchmark scripts generate (bench/sections/*.md, one per script, each
     saying its own command and date), appended so that docs/benchmarks.md holds every number."""
     lines = []
-    for fragment in sorted(SECTIONS_DIR.glob("*.md")):
+    for fragment in sorted(bs.SECTIONS_DIR.glob("*.md")):
         lines.append(f"<!-- from bench/sections/{fragment.name} (regenerated by its own script) -->")
         lines.extend(fragment.read_text().rstrip("\n").split("\n"))
         lines.append("")
@@ -565,7 +337,7 @@ def write_markdown(path, meta, rows, scenes):
     L.append(f"- prunesfm: `{meta['prunesfm']}` (`run` subcommand: {'yes' if meta['prunesfm_run'] else 'no'})")
     L.append(f"- Peer: {meta['colmap_version'] or 'colmap not installed'}; CPU SIFT, "
              f"{meta['settings']['threads']} threads for every tool; real images: one shared "
-             f"`{COLMAP_CAMERA_MODEL}` camera per dataset (`--ImageReader.single_camera 1`), "
+             f"`{bs.COLMAP_CAMERA_MODEL}` camera per dataset (`--ImageReader.single_camera 1`), "
              f"`--SiftExtraction.max_image_size {meta['settings']['max_image_size']}`, principal point not refined "
              f"(COLMAP's default), K not given (focal from EXIF when present, else COLMAP's 1.2·max(w, h) prior)")
     L.append(f"- Seed {meta['settings']['seed']} (synthetic scenes and the evaluation's alignment RANSAC)")
@@ -724,7 +496,7 @@ def write_markdown(path, meta, rows, scenes):
             if r.get("note"):
                 L.append(f"|  | note: {r['note']} | | | | | | | | | |")
         L.append("")
-    if path.resolve() == (REPO / "docs" / "benchmarks.md").resolve():
+    if path.resolve() == (bs.REPO / "docs" / "benchmarks.md").resolve():
         L.extend(section_fragments())
     path.parent.mkdir(parents=True, exist_ok=True)
     tmp = path.with_name(path.name + ".tmp")
@@ -819,10 +591,10 @@ def scaling_section(meta, rows):
 
 def write_reports(args, meta, rows, keys):
     if args.large:
-        SECTIONS_DIR.mkdir(parents=True, exist_ok=True)
-        tmp = SECTIONS_DIR / "scaling.md.tmp"
+        bs.SECTIONS_DIR.mkdir(parents=True, exist_ok=True)
+        tmp = bs.SECTIONS_DIR / "scaling.md.tmp"
         tmp.write_text("\n".join(scaling_section(meta, rows)) + "\n")
-        tmp.replace(SECTIONS_DIR / "scaling.md")
+        tmp.replace(bs.SECTIONS_DIR / "scaling.md")
     if args.merge:
         meta = json.loads(json.dumps(meta, default=str))  # merge_previous adds the carried scenes
         rows, keys = merge_previous(args, meta, rows, keys)
@@ -836,20 +608,19 @@ def write_reports(args, meta, rows, keys):
 def parse_args(argv):
     p = argparse.ArgumentParser(description=__doc__.split("\n\n")[0],
                                 formatter_class=argparse.ArgumentDefaultsHelpFormatter)
-    p.add_argument("--prunesfm", help="prunesfm executable (default: build/release/src/software/prunesfm, "
-                                      "else the newest build*/.../src/software/prunesfm)")
-    p.add_argument("--colmap", default=shutil.which("colmap"), help="colmap executable (peer; skipped if absent)")
-    p.add_argument("--shared", default=str(REPO.parent / "shared"), help="shared data folder")
-    p.add_argument("--work", default="/tmp/prunesfm-bench", help="scratch folder (kept: logs and models)")
+    bs.add_options(p, "prunesfm", "colmap", "shared", "work",
+                   prunesfm={"help": "prunesfm executable (default: build/release/src/software/prunesfm, "
+                                     "else the newest build*/.../src/software/prunesfm)"},
+                   colmap={"help": "colmap executable (peer; skipped if absent)"},
+                   work={"default": "/tmp/prunesfm-bench", "help": "scratch folder (kept: logs and models)"})
     p.add_argument("--scenes", default=",".join(SMALL_SYNTHETIC + list(DATASETS)),
                    help="comma-separated synthetic scenes and datasets with ground truth")
     p.add_argument("--large", metavar="SIZES",
                    help=f"separate target: only {LARGE_SYNTHETIC} at these view counts, e.g. 1000,2000,5000")
     p.add_argument("--engines", default=",".join(ALL_ENGINES), help="comma-separated engines")
-    p.add_argument("--seed", type=int, default=0)
-    p.add_argument("--threads", type=int, default=os.cpu_count(), help="threads given to every tool")
-    p.add_argument("--max_image_size", type=int, default=3200, help="COLMAP SiftExtraction.max_image_size")
-    p.add_argument("--timeout", type=int, default=7200, help="seconds before a stage is killed")
+    bs.add_options(p, "seed", "threads", "max_image_size", "timeout",
+                   threads={"default": os.cpu_count(), "help": "threads given to every tool"},
+                   timeout={"default": 7200})
     p.add_argument("--smoke", action="store_true",
                    help="quick check (< 1 min): clean scene with 8 views; writes into --work unless "
                         "--output/--json are given")
@@ -899,11 +670,11 @@ def parse_args(argv):
         args.output = args.output or str(work / "smoke.md")
         args.json = args.json or str(work / "smoke.json")
     elif args.large:
-        args.output = args.output or str(REPO / "docs" / "benchmarks_large.md")
-        args.json = args.json or str(REPO / "bench" / "results_large.json")
+        args.output = args.output or str(bs.REPO / "docs" / "benchmarks_large.md")
+        args.json = args.json or str(bs.REPO / "bench" / "results_large.json")
     else:
-        args.output = args.output or str(REPO / "docs" / "benchmarks.md")
-        args.json = args.json or str(REPO / "bench" / "results.json")
+        args.output = args.output or str(bs.REPO / "docs" / "benchmarks.md")
+        args.json = args.json or str(bs.REPO / "bench" / "results.json")
     return args
 
 
@@ -919,7 +690,7 @@ def main(argv):
         return 0
     work = Path(args.work).resolve()
     work.mkdir(parents=True, exist_ok=True)
-    prunesfm = find_prunesfm(args.prunesfm)
+    prunesfm = bs.find_prunesfm(args.prunesfm)
     caps = prunesfm_capabilities(prunesfm)
     colmap = args.colmap if args.colmap and Path(args.colmap).exists() else None
     engines = [e.strip() for e in args.engines.split(",") if e.strip()]
@@ -943,12 +714,12 @@ def main(argv):
                 sys.exit(f"run_benchmarks: unknown scene {s} (synthetic: {', '.join(SMALL_SYNTHETIC)}, "
                          f"{LARGE_SYNTHETIC}; datasets: {', '.join(DATASETS)})")
     shown_argv = ["bench/run_benchmarks.py"] + argv
-    meta = {"command": " ".join(shlex.quote(a) for a in shown_argv), "machine": machine_info(),
-            "prunesfm": str(prunesfm.relative_to(REPO) if prunesfm.is_relative_to(REPO) else prunesfm),
+    meta = {"command": " ".join(shlex.quote(a) for a in shown_argv), "machine": bs.machine_info(),
+            "prunesfm": bs.prunesfm_label(prunesfm),
             "prunesfm_run": caps["run"], "prunesfm_run_intrinsics_options": caps["intrinsics_options"],
-            "colmap_version": colmap_version(colmap),
+            "colmap_version": bs.colmap_version(colmap),
             "settings": {"seed": args.seed, "threads": args.threads, "max_image_size": args.max_image_size,
-                         "colmap_camera_model": COLMAP_CAMERA_MODEL, "thresholds_deg": THRESHOLDS},
+                         "colmap_camera_model": bs.COLMAP_CAMERA_MODEL, "thresholds_deg": bs.THRESHOLDS},
             "scenes": {}}
     if args.merge:
         pm = args.previous_meta
@@ -999,9 +770,9 @@ def main(argv):
                 continue
             print(f"-- {scene['key']} / {engine}", flush=True)
             if engine == "colmap":
-                stages, model, note = run_colmap(args, prunesfm, colmap, scene, work)
+                stages, model, note = run_colmap_on_scene(args, colmap, scene, work)
             else:
-                stages, model, note = run_ours(args, prunesfm, caps, engine, scene, work)
+                stages, model, note = run_ours_on_scene(args, prunesfm, caps, engine, scene, work)
             shared = [dict(s, shared=True) for s in scene["shared_stages"]]
             row["stages"] = shared + stages
             row["total_s"] = round(sum(s["seconds"] for s in row["stages"]), 2)

@@ -22,8 +22,8 @@ import sys
 from pathlib import Path
 
 sys.path.insert(0, str(Path(__file__).resolve().parent))
+import bench_colmap as bc  # noqa: E402
 import bench_support as bs  # noqa: E402
-import run_benchmarks as rb  # noqa: E402
 
 DEFAULT_VARIANTS = [
     "defaults=",
@@ -50,7 +50,7 @@ def synthetic_scene(args, prunesfm, scene):
     out = Path(args.work) / "synthetic" / scene / "data"
     gt = out / "ground_truth" / "gt_cameras.txt"
     if not gt.is_file():
-        stage = rb.synth_stage(prunesfm, scene, args.seed, out, Path(args.work) / f"{scene}_synth.log", args.timeout,
+        stage = bs.synth_stage(prunesfm, scene, args.seed, out, Path(args.work) / f"{scene}_synth.log", args.timeout,
                                threads=args.threads)
         if stage["rc"] != 0:
             sys.exit(f"seed_sweep_bench: prunesfm synth --scene {scene} failed (see {args.work}/{scene}_synth.log)")
@@ -70,11 +70,11 @@ def main():
     parser.add_argument("--target", type=float, help="AUC counted as a success (default: 90 real, 95 synthetic)")
     parser.add_argument("--fragment", help="section name to write (default: seed_sweep, or seed_sweep_synthetic "
                                            "with --synthetic); another name keeps those sections and adds one")
-    parser.add_argument("--jobs", type=int, default=1,
-                        help="seeds run at once (each with --threads threads); the results do not depend on it")
+    bs.add_options(parser, "jobs",
+                   jobs={"help": "seeds run at once (each with --threads threads); the results do not depend on it"})
     parser.add_argument("--title", help="section title (default: by the kind of scenes)")
     args = parser.parse_args()
-    prunesfm = str(Path(args.prunesfm).resolve()) if args.prunesfm else str(rb.find_prunesfm(None))
+    prunesfm = str(bs.find_prunesfm(args.prunesfm))
     if "-" in args.seeds:
         first, last = (int(x) for x in args.seeds.split("-"))
         seeds = list(range(first, last + 1))
@@ -100,12 +100,13 @@ def main():
         out = base / scene / f"{re.sub(r'[^A-Za-z0-9]+', '_', label).strip('_')}_{seed}"
         out.mkdir(parents=True, exist_ok=True)
         db = out / "database.db"
-        rb.copy_database(database, db)
-        argv = [prunesfm, "run", "--database", db, "--image_path", images, "--output_path", out / "result",
-                "--engine", "GLOBAL_PRUNED", "--seed", seed, "--num_threads", args.threads, *shlex.split(extra)]
-        stage = rb.run_stage("run", argv, out / "run.log", args.timeout)
-        model = out / "result" / "sparse" / "0" if stage["rc"] == 0 else None
-        auc = bs.evaluate_against(prunesfm, model, reference, out, str(args.seed), args.timeout)["auc"][auc_key]
+        bc.copy_database(database, db)
+        stage = bs.run_ours_on_database(prunesfm, db, images, out / "result", "GLOBAL_PRUNED", out / "run.log",
+                                        args.timeout,
+                                        ["--seed", seed, "--num_threads", args.threads, *shlex.split(extra)])
+        evaluation = bs.evaluate_against(prunesfm, bs.run_model(stage, out / "result"), reference, out,
+                                         str(args.seed), args.timeout)
+        auc = evaluation["auc"][auc_key]
         print(f"{scene} {label} seed {seed}: AUC@{auc_key} {auc:.1f}", flush=True)
         return auc
 

@@ -18,21 +18,20 @@ import sys
 from pathlib import Path
 
 sys.path.insert(0, str(Path(__file__).resolve().parent))
+import bench_colmap as bc  # noqa: E402
 import bench_support as bs  # noqa: E402
-import oracle_pruning_bench as ob  # noqa: E402
-import run_benchmarks as rb  # noqa: E402
 
 TRACKS = ("CONNECTED", "MATCH_STARS")
 
 
 def run_global(args, prunesfm, database, scene, out, tracks, engine="GLOBAL", epipolar_deg=None):
-    argv = [prunesfm, "run", "--database", database, "--image_path", scene / "images", "--output", out / "result",
-            "--engine", engine, "--positioning_tracks", tracks, "--seed", args.seed, "--num_threads", args.threads]
+    options = ["--positioning_tracks", tracks, "--seed", args.seed, "--num_threads", args.threads]
     if epipolar_deg is not None:
-        argv += ["--max_epipolar_error_deg", epipolar_deg]
-    stage = rb.run_stage("run", argv, out / "run.log", args.timeout)
-    model = out / "result" / "sparse" / "0" if stage["rc"] == 0 else None
-    return bs.evaluate_against(prunesfm, model, scene / "ground_truth" / "gt_cameras.txt", out, args.seed, args.timeout)
+        options += ["--max_epipolar_error_deg", epipolar_deg]
+    stage = bs.run_ours_on_database(prunesfm, database, scene / "images", out / "result", engine, out / "run.log",
+                                    args.timeout, options, output_flag="--output")
+    return bs.evaluate_against(prunesfm, bs.run_model(stage, out / "result"), scene / "ground_truth" / "gt_cameras.txt",
+                               out, args.seed, args.timeout)
 
 
 def cell(r):
@@ -51,7 +50,7 @@ def threshold_table(args, prunesfm, scene, oracle_db, work):
              + " | ".join(f"whole scene, GLOBAL_PRUNED, `{t}`" for t in TRACKS) + " |",
              "|---|" + "---|" * (2 * len(TRACKS))]
     whole_db = work / "whole_scene.db"
-    rb.copy_database(scene / "database.db", whole_db)
+    bc.copy_database(scene / "database.db", whole_db)
     for degrees in thresholds:
         cells = []
         for engine, database in (("GLOBAL", oracle_db), ("GLOBAL_PRUNED", whole_db)):
@@ -71,20 +70,20 @@ def main():
     parser.add_argument("--epipolar_thresholds", default="0.25,0.15,0.12,0.1,0.08",
                         help="--max_epipolar_error_deg values of the second table (empty: no second table)")
     args = parser.parse_args()
-    prunesfm = str(Path(args.prunesfm).resolve()) if args.prunesfm else str(rb.find_prunesfm(None))
+    prunesfm = str(bs.find_prunesfm(args.prunesfm))
     work = Path(args.work).resolve()
     work.mkdir(parents=True, exist_ok=True)
     scene = work / "scene"
-    rb.synth_stage(prunesfm, args.scene, args.seed, scene, work / "synth.log", args.timeout)
+    bs.synth_stage(prunesfm, args.scene, args.seed, scene, work / "synth.log", args.timeout)
     labels = scene / "ground_truth" / "feature_landmarks.txt"
     if not labels.is_file():
         print(f"twin_match_share_bench: {labels} missing (a prunesfm older than its match labels)")
         return 1
-    features = ob.read_feature_landmarks(labels)
-    pairs, num_pairs = ob.twin_dominated_pairs(scene / "ground_truth" / "synthetic_scene.json", 1.0)
+    features = bs.read_feature_landmarks(labels)
+    pairs, num_pairs = bs.twin_dominated_pairs(scene / "ground_truth" / "synthetic_scene.json", 1.0)
     oracle_db = work / "oracle.db"
-    rb.copy_database(scene / "database.db", oracle_db)
-    deleted_pairs = ob.delete_pairs(oracle_db, pairs)
+    bc.copy_database(scene / "database.db", oracle_db)
+    deleted_pairs = bs.delete_pairs(oracle_db, pairs)
     lines = bs.header_lines("Twin matches inside true pairs: what the positioning survives", sys.argv, prunesfm, None)
     lines += [f"`prunesfm synth --scene {args.scene} --seed {args.seed}`; the oracle deletes {deleted_pairs} of "
               f"{num_pairs} pairs (twin matches outnumber true ones), then a random share of the twin matches "
@@ -98,8 +97,8 @@ def main():
         for sample_seed in (seeds[:1] if share in (0.0, 1.0) else seeds):
             name = f"share_{share:g}_seed_{sample_seed}"
             database = work / f"{name}.db"
-            rb.copy_database(oracle_db, database)
-            deleted, total = ob.delete_twin_matches(database, features, share, sample_seed)
+            bc.copy_database(oracle_db, database)
+            deleted, total = bs.delete_twin_matches(database, features, share, sample_seed)
             cells = [cell(run_global(args, prunesfm, database, scene, work / f"{name}_{tracks}", tracks))
                      for tracks in TRACKS]
             kept = f"{share:.0%} (deleted {deleted} of {total} matches)"
