@@ -129,7 +129,9 @@ std::set<ViewPair> PairsToKeep(const sfm_pruning::ReconstructionInput& input,
   return keep;
 }
 
-void RunPrune(const PruneArguments& args) {
+// The pruning report's path (--report, or beside --output), after checking that the arguments
+// name one input and that neither output would replace it. Before any work.
+fs::path CheckedReportPath(const PruneArguments& args) {
   const bool colmap = !args.database.empty();
   if (colmap == !args.sfm_data.empty()) {
     throw Error("prune: give either --database, or --sfm_data with --matches_dir");
@@ -143,6 +145,13 @@ void RunPrune(const PruneArguments& args) {
   if (!colmap) inputs.push_back(sfm_pruning::FindOpenMvgMatchesFile(args.matches_dir, args.match_file));
   RefuseOutputOverInput(output, inputs);
   RefuseOutputOverInput(report_path, inputs);
+  return report_path;
+}
+
+void RunPrune(const PruneArguments& args) {
+  const bool colmap = !args.database.empty();
+  const fs::path output = args.output;
+  const fs::path report_path = CheckedReportPath(args);
 
   StageClock clock;
   const sfm_pruning::ReconstructionInput input =
