@@ -81,10 +81,7 @@ EvaluationReport EvaluateModel(const SfmData& estimate, const SfmData& ground_tr
 void EvaluationOptions::Check() const {
   // What AucPercent (pose_auc.hpp) integrates up to; an empty list reports no AUC.
   for (size_t k = 0; k < auc_thresholds_deg.size(); ++k) {
-    if (!(auc_thresholds_deg[k] > 0.0 && std::isfinite(auc_thresholds_deg[k]))) {
-      option_checks_detail::Fail("EvaluationOptions::auc_thresholds_deg[" + std::to_string(k) + "]",
-                                 "positive and finite", auc_thresholds_deg[k]);
-    }
+    RequirePositiveFinite(auc_thresholds_deg[k], "EvaluationOptions::auc_thresholds_deg[" + std::to_string(k) + "]");
   }
   alignment.Check();
 }

@@ -144,10 +144,7 @@ std::optional<RobustSimilarity> FitSimilarityRobust(const std::vector<Eigen::Vec
 
 void RobustSimilarityOptions::Check() const {
   // A threshold of 0 admits no inlier; an infinite one makes every point one.
-  if (!(inlier_threshold_scene_fraction > 0.0 && std::isfinite(inlier_threshold_scene_fraction))) {
-    option_checks_detail::Fail("RobustSimilarityOptions::inlier_threshold_scene_fraction",
-                               "positive and finite", inlier_threshold_scene_fraction);
-  }
+  RequirePositiveFinite(inlier_threshold_scene_fraction, "RobustSimilarityOptions::inlier_threshold_scene_fraction");
   // Without a sample there is no fit.
   RequireAtLeast(max_iterations, 1, "RobustSimilarityOptions::max_iterations");
 }

@@ -261,23 +261,18 @@ void SyntheticSceneOptions::Check() const {
   RequireInRange(descriptor_noise, 0.0, limits.max_descriptor_noise,
                  "SyntheticSceneOptions::descriptor_noise");
   // Dropping every point would leave nothing to detect.
-  if (!(dropout >= 0.0 && dropout < 1.0)) {
-    option_checks_detail::Fail("SyntheticSceneOptions::dropout", "in [0, 1)", dropout);
-  }
+  RequireInHalfOpenRange(dropout, 0.0, 1.0, "SyntheticSceneOptions::dropout");
   RequireInRange(clutter_ratio, 0.0, limits.max_clutter_ratio, "SyntheticSceneOptions::clutter_ratio");
   // 90 or more turns the facing test off; 0 would detect nothing.
   RequirePositiveAtMost(max_incidence_deg, 180.0, "SyntheticSceneOptions::max_incidence_deg");
-  if (max_distance_m != 0.0 && !(max_distance_m > 0.0 && std::isfinite(max_distance_m))) {
-    option_checks_detail::Fail("SyntheticSceneOptions::max_distance_m (or 0: scene default)",
-                               "positive and finite", max_distance_m);
+  if (max_distance_m != 0.0) {
+    RequirePositiveFinite(max_distance_m, "SyntheticSceneOptions::max_distance_m (or 0: scene default)");
   }
   RequirePositiveAtMost(point_density_scale, limits.max_point_density_scale,
                         "SyntheticSceneOptions::point_density_scale");
   RequirePositiveAtMost(ratio_test, 1.0, "SyntheticSceneOptions::ratio_test");
   // Only wrong matches would have to be injected among no true one.
-  if (!(outlier_ratio >= 0.0 && outlier_ratio < 1.0)) {
-    option_checks_detail::Fail("SyntheticSceneOptions::outlier_ratio", "in [0, 1)", outlier_ratio);
-  }
+  RequireInHalfOpenRange(outlier_ratio, 0.0, 1.0, "SyntheticSceneOptions::outlier_ratio");
   RequireAtLeast(min_matches, 0, "SyntheticSceneOptions::min_matches");
   RequireAtLeast(sequential_window, 0, "SyntheticSceneOptions::sequential_window (0: scene default)");
   RequireAtLeast(loop_candidates, 0, "SyntheticSceneOptions::loop_candidates (0: scene default)");

@@ -136,9 +136,7 @@ ImageListing ListImages(const fs::path& image_dir, const ImageListingOptions& op
 }
 
 void ImageListingOptions::Check() const {
-  if (focal_px && !(*focal_px > 0.0 && std::isfinite(*focal_px))) {
-    option_checks_detail::Fail("ImageListingOptions::focal_px", "positive and finite", *focal_px);
-  }
+  if (focal_px) RequirePositiveFinite(*focal_px, "ImageListingOptions::focal_px");
   // What ReadKFile (io/k_file.hpp) accepts: the intrinsics take fx, fy, cx and cy from it.
   if (K) {
     const Eigen::Matrix3d& k = *K;

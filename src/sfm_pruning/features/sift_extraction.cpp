@@ -148,9 +148,7 @@ void SiftOptions::Check() const {
   // 0 keeps every DoG extremum; a negative threshold would too, so it can only be a mistake.
   RequireAtLeast(contrast_threshold, 0.0, "SiftOptions::contrast_threshold");
   // The largest ratio of principal curvatures kept; an infinite one fails OpenCV's test (inf < inf).
-  if (!(edge_threshold > 0.0 && std::isfinite(edge_threshold))) {
-    option_checks_detail::Fail("SiftOptions::edge_threshold", "positive and finite", edge_threshold);
-  }
+  RequirePositiveFinite(edge_threshold, "SiftOptions::edge_threshold");
   RequireAtLeast(num_octave_layers, 1, "SiftOptions::num_octave_layers");
   RequireAtLeast(num_threads, 1, "SiftOptions::num_threads");
 }

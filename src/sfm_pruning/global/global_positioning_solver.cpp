@@ -3,7 +3,6 @@
 #include "sfm_pruning/util/option_checks.hpp"
 
 #include <algorithm>
-#include <limits>
 #include <memory>
 #include <numeric>
 #include <random>

@@ -152,12 +152,8 @@ std::string DrawTopViewSvg(const TopViewScene& scene, const TopViewFrame& frame,
 
 void TopViewOptions::Check() const {
   // The drawing's size in SVG pixels: every position is computed from it.
-  if (!(width > 0.0 && std::isfinite(width))) {
-    option_checks_detail::Fail("TopViewOptions::width", "positive and finite", width);
-  }
-  if (!(height > 0.0 && std::isfinite(height))) {
-    option_checks_detail::Fail("TopViewOptions::height", "positive and finite", height);
-  }
+  RequirePositiveFinite(width, "TopViewOptions::width");
+  RequirePositiveFinite(height, "TopViewOptions::height");
   // The subsample keeps at least one point whatever the cap, so 0 would not mean "none".
   RequireAtLeast<size_t>(max_points, 1, "TopViewOptions::max_points");
   RequireInRange(point_quantile, 0.0, 1.0, "TopViewOptions::point_quantile");

@@ -48,6 +48,20 @@ void RequireAtLeast(T value, T min, const std::string& field) {
   }
 }
 
+// 0 < value < infinity (NaN fails).
+inline void RequirePositiveFinite(double value, const std::string& field) {
+  if (!(value > 0.0 && std::isfinite(value))) option_checks_detail::Fail(field, "positive and finite", value);
+}
+
+// min <= value < max (NaN fails).
+inline void RequireInHalfOpenRange(double value, double min, double max, const std::string& field) {
+  if (!(value >= min && value < max)) {
+    std::ostringstream rule;
+    rule << "in [" << min << ", " << max << ")";
+    option_checks_detail::Fail(field, rule.str(), value);
+  }
+}
+
 // Any number (NaN fails): for fields where every value, negative ones included, has a meaning.
 inline void RequireNumber(double value, const std::string& field) {
   if (std::isnan(value)) option_checks_detail::Fail(field, "a number", value);
