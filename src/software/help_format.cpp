@@ -65,6 +65,13 @@ class CompactHelpFormatter : public CLI::Formatter {
 
 CLI::Option* MarkExpert(CLI::Option* option) { return option->group(kExpertOptionsGroup); }
 
+void MarkExpertExcept(CLI::App* group, const std::string& shown) {
+  for (CLI::Option* option : group->get_options()) {
+    const bool help_flag = option == group->get_help_ptr() || option == group->get_help_all_ptr();
+    if (!help_flag && option->get_name() != shown) MarkExpert(option);
+  }
+}
+
 void UseCompactHelp(CLI::App* app) {
   app->formatter(std::make_shared<CompactHelpFormatter>());
   app->set_help_all_flag("--help_all", "Print this help with the expert options too and exit");

@@ -4,6 +4,8 @@
 // `--help_all`, which lists every option. Without this `prunesfm run --help` is 170 lines.
 #pragma once
 
+#include <string>
+
 #include <CLI/CLI.hpp>
 
 namespace prunesfm {
@@ -13,6 +15,10 @@ inline constexpr const char* kExpertOptionsGroup = "Expert options";
 
 // Moves `option` into the expert group; returns it for chaining.
 CLI::Option* MarkExpert(CLI::Option* option);
+
+// Moves every option of the option group `group` but `shown` (and the help flags) into the
+// expert group.
+void MarkExpertExcept(CLI::App* group, const std::string& shown);
 
 // Installs the collapsing help on `app` and adds `--help_all`. Call before adding subcommands:
 // they inherit both when they are created.

@@ -36,10 +36,7 @@ void AddIntrinsicsOptions(CLI::App* cmd, IntrinsicsSettings* settings) {
                    "For those cameras: refine the principal point in bundle adjustment")
       ->capture_default_str();
   // Which cameras to calibrate is the common choice; what to refine of them is for --help_all.
-  for (CLI::Option* option : group->get_options()) {
-    const bool help_flag = option == group->get_help_ptr() || option == group->get_help_all_ptr();
-    if (!help_flag && option->get_name() != "--refine_intrinsics") MarkExpert(option);
-  }
+  MarkExpertExcept(group, "--refine_intrinsics");
 }
 
 sfm_pruning::IntrinsicsRefinementOptions ToIntrinsicsOptions(const IntrinsicsSettings& settings) {

@@ -287,10 +287,7 @@ void AddPruningOptions(CLI::App* cmd, sfm_pruning::ViewGraphPruningOptions* opti
   AddPairTrustFlags(group, options);
   // The preset is the one choice most runs make; every other pruning flag studies or adjusts the
   // method, and `--help` lists them only under --help_all.
-  for (CLI::Option* option : group->get_options()) {
-    const bool help_flag = option == group->get_help_ptr() || option == group->get_help_all_ptr();
-    if (!help_flag && option->get_name() != "--prune_preset") MarkExpert(option);
-  }
+  MarkExpertExcept(group, "--prune_preset");
 }
 
 }  // namespace prunesfm
