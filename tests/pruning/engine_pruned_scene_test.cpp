@@ -71,11 +71,16 @@ TEST(EnginePrunedScene, CleanSceneIsNotHarmed) {
   ASSERT_TRUE(run.pruned.engine.success) << run.pruned.engine.message;
   ExpectWellFormedPartition(run.pruned.pruning.partition);
   EXPECT_GE(run.pruned.pruning.partition.accepted.size(), 2u);
-  // The pruning's phases (the model audit is off by default), then the solve of the pruned graph.
+  // The pruning's phases (the model audit is off by default), then one round of the
+  // missing-correspondence check: on a clean scene it removes nothing, and its solve is the final one.
   std::vector<std::string> phases;
   for (const StageTiming& timing : run.pruned.pruning.timings) phases.push_back(timing.stage);
   EXPECT_EQ(phases, (std::vector<std::string>{"subgraph partition", "inter-subgraph pruning",
-                                              "landmark check of matches"}));
+                                              "landmark check of matches", "solve for the missing-correspondence check",
+                                              "missing-correspondence check"}));
+  ASSERT_EQ(run.pruned.pruning.missing_correspondence_rounds.size(), 1u);
+  EXPECT_GT(run.pruned.pruning.missing_correspondence_rounds[0].num_judged, 0u);
+  EXPECT_TRUE(run.pruned.pruning.missing_correspondence_rounds[0].removed.empty());
   EXPECT_EQ(run.pruned.engine.timings.front().stage, "rotation averaging");
   for (const RemovedEdge& removed : run.pruned.pruning.removed_edges) {
     EXPECT_FALSE(run.pruned.pruning.partition.accepted.empty());
@@ -96,6 +101,7 @@ TEST(EnginePrunedScene, TheAuditedModelIsAdjustedNotSolvedAgain) {
   const SyntheticScene& scene = CleanScene();
   PrunedGlobalEngineOptions options;
   options.pruning.audit.enabled = true;
+  options.pruning.missing_correspondences.enabled = false;  // its own solve would be the final one
   const Comparison run = CompareEngines(scene, options);
   ASSERT_TRUE(run.pruned.engine.success) << run.pruned.engine.message;
   std::vector<std::string> phases;
@@ -117,6 +123,7 @@ TEST(EnginePrunedScene, AFullAuditSolveThatChangesNothingIsTheFinalSolve) {
   options.pruning.audit.enabled = true;
   options.pruning.audit.model_schedule = AuditModelSchedule::kFull;
   options.pruning.audit.refine_final = false;
+  options.pruning.missing_correspondences.enabled = false;
   const Comparison run = CompareEngines(scene, options);
   ASSERT_TRUE(run.pruned.engine.success) << run.pruned.engine.message;
   EXPECT_FALSE(run.pruned.pruning.audit.empty());

@@ -9,23 +9,10 @@
 namespace sfm_pruning {
 namespace {
 
+using testing::GroundTruthModel;
 using testing::MakePruningTestScene;
 using testing::PruningTestScene;
 using testing::Similarity;
-
-SfmData GroundTruthModel(const PruningTestScene& scene) {
-  SfmData model = scene.views_and_intrinsics;
-  for (const auto& [view_id, view] : model.views) model.poses[view.id_pose] = scene.poses[view_id];
-  for (size_t p = 0; p < scene.points.size(); ++p) {
-    Landmark landmark;
-    landmark.X = scene.points[p];
-    for (const auto& [view_id, view] : model.views) {
-      landmark.observations[view_id] = {scene.features.at(view_id).Position(p), static_cast<IndexT>(p)};
-    }
-    model.structure[static_cast<IndexT>(p)] = landmark;
-  }
-  return model;
-}
 
 TEST(ModelEdgeAudit, TrueMatchesTransferAndTwinMatchesDoNot) {
   PruningTestScene scene = MakePruningTestScene(8, 40, 3);

@@ -109,4 +109,18 @@ SubgraphSolution PruningTestScene::Solution(const std::vector<IndexT>& view_ids,
   return solution;
 }
 
+SfmData GroundTruthModel(const PruningTestScene& scene) {
+  SfmData model = scene.views_and_intrinsics;
+  for (const auto& [view_id, view] : model.views) model.poses[view.id_pose] = scene.poses[view_id];
+  for (size_t p = 0; p < scene.points.size(); ++p) {
+    Landmark landmark;
+    landmark.X = scene.points[p];
+    for (const auto& [view_id, view] : model.views) {
+      landmark.observations[view_id] = {scene.features.at(view_id).Position(p), static_cast<IndexT>(p)};
+    }
+    model.structure[static_cast<IndexT>(p)] = landmark;
+  }
+  return model;
+}
+
 }  // namespace sfm_pruning::testing

@@ -43,4 +43,8 @@ PruningTestScene MakePruningTestScene(size_t num_views, size_t num_points, uint6
 
 Similarity RandomSimilarity(uint64_t seed, double scale);
 
+// The ground truth as a model: the scene's views posed exactly, every point a landmark that every
+// view observes (feature id = point id).
+SfmData GroundTruthModel(const PruningTestScene& scene);
+
 }  // namespace sfm_pruning::testing

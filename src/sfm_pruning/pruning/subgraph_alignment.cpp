@@ -321,6 +321,7 @@ const char* InterSubgraphVerdictName(InterSubgraphVerdict verdict) {
     case InterSubgraphVerdict::kUnverified: return "unverified";
     case InterSubgraphVerdict::kModelDisagreement: return "model_disagreement";
     case InterSubgraphVerdict::kLandmarkDisagreement: return "landmark_disagreement";
+    case InterSubgraphVerdict::kMissingCorrespondences: return "missing_correspondences";
   }
   return "unknown";
 }

@@ -117,6 +117,9 @@ enum class InterSubgraphVerdict {
                           // the pruned graph (model_edge_audit.hpp)
   kLandmarkDisagreement,  // kept by the pruning, but too few of its matches agree with the two
                           // subgraphs' landmarks (landmark_match_check.hpp)
+  kMissingCorrespondences,  // kept by the pruning, removed because its views miss the landmarks the
+                            // model solved from the pruned graph predicts in them
+                            // (missing_correspondence_check.hpp)
 };
 
 const char* InterSubgraphVerdictName(InterSubgraphVerdict verdict);

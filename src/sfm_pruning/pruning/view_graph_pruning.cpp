@@ -217,6 +217,7 @@ void ApplyPaperMethod(ViewGraphPruningOptions* options) {
   options->trust_prior_edges = 0.0;
   options->landmark_check.max_angle_deg = 0.0;
   options->audit.enabled = false;
+  options->missing_correspondences.enabled = false;
 }
 
 void PruneViewGraph(const ViewGraphPruningOptions& options, ViewGraph* graph, const SfmData& views_and_intrinsics,
@@ -376,6 +377,74 @@ bool ApplyAudit(const ModelEdgeAuditOptions& options, ViewGraph* pruned, PrunedG
   return changed;
 }
 
+// Whether views a and b are joined by a path of `adjacency` other than the edge (a, b) itself.
+bool JoinedWithoutEdge(const std::map<IndexT, std::vector<IndexT>>& adjacency, const ViewPair& pair) {
+  std::set<IndexT> reached{pair.first};
+  std::vector<IndexT> frontier{pair.first};
+  while (!frontier.empty()) {
+    const IndexT view = frontier.back();
+    frontier.pop_back();
+    const auto neighbours = adjacency.find(view);
+    if (neighbours == adjacency.end()) continue;
+    for (const IndexT next : neighbours->second) {
+      if (view == pair.first && next == pair.second) continue;
+      if (next == pair.second) return true;
+      if (reached.insert(next).second) frontier.push_back(next);
+    }
+  }
+  return false;
+}
+
+// Removes the edges of round.removed from *pruned, lowest observed share first, except one whose
+// removal would cut views off from the rest: an edge that alone joins some views to the others is
+// their only placement, and without it the final solve drops them. Those edges leave round.removed.
+void RemoveEdgesBelowTheBound(MissingCorrespondenceRound* round, ViewGraph* pruned, std::vector<RemovedEdge>* removed) {
+  std::map<ViewPair, double> share;
+  for (const EdgeObservedShare& edge : round->edges) share[edge.pair] = edge.Share();
+  std::vector<ViewPair> order = round->removed;
+  std::stable_sort(order.begin(), order.end(),
+                   [&](const ViewPair& a, const ViewPair& b) { return share.at(a) < share.at(b); });
+  std::map<IndexT, std::vector<IndexT>> adjacency = pruned->ValidAdjacency();
+  round->removed.clear();
+  for (const ViewPair& pair : order) {
+    if (!JoinedWithoutEdge(adjacency, pair)) continue;
+    auto& first = adjacency[pair.first];
+    first.erase(std::remove(first.begin(), first.end(), pair.second), first.end());
+    auto& second = adjacency[pair.second];
+    second.erase(std::remove(second.begin(), second.end(), pair.first), second.end());
+    const EdgeInvalidation why{EdgeInvalidReason::kMissingCorrespondences, share.at(pair), round->bound};
+    RemoveEdge(pair, -1, -1, InterSubgraphVerdict::kMissingCorrespondences, why, pruned, removed);
+    round->removed.push_back(pair);
+  }
+}
+
+// The rounds of the missing-correspondence check (MissingCorrespondenceOptions): solve *pruned
+// into *model with the final solve's schedule, judge the kept edges between subgraphs, remove the
+// ones below the round's bound; again while a round removes edges.
+PrunedGlobalEngineStep CheckMissingCorrespondences(const PrunedGlobalEngineOptions& options,
+                                                   const SfmData& views_and_intrinsics,
+                                                   const FeaturesPerView& features, ViewGraph* pruned,
+                                                   SfmData* model, PrunedGlobalEngineReport* report,
+                                                   const ProgressCallback& progress) {
+  const MissingCorrespondenceOptions& check = options.pruning.missing_correspondences;
+  ViewGraphPruningReport& pruning = report->pruning;
+  for (size_t round = 0; round < check.max_rounds; ++round) {
+    RunGlobalEngine(options.engine, *pruned, views_and_intrinsics, features, model, &report->engine, progress);
+    pruning.timings.push_back({"solve for the missing-correspondence check", report->engine.total_seconds});
+    if (!report->engine.success) return PrunedGlobalEngineStep::kAuditModelFailed;
+    const auto start = std::chrono::steady_clock::now();
+    MissingCorrespondenceRound verdict = JudgeObservedShares(
+        MeasureObservedShares(*model, InterSubgraphEdges(*pruned, pruning.partition.accepted), check), check);
+    RemoveEdgesBelowTheBound(&verdict, pruned, &pruning.removed_edges);
+    pruning.num_output_edges = pruned->NumValidEdges();
+    const bool changed = !verdict.removed.empty();
+    pruning.missing_correspondence_rounds.push_back(std::move(verdict));
+    pruning.timings.push_back({"missing-correspondence check", SecondsSince(start)});
+    if (!changed) return PrunedGlobalEngineStep::kSolved;
+  }
+  return PrunedGlobalEngineStep::kSolvedBeforeChanges;
+}
+
 // The schedule of the solve before the audit (ModelEdgeAuditOptions::model_schedule).
 GlobalEngineOptions AuditModelOptions(const GlobalEngineOptions& final_solve, AuditModelSchedule schedule) {
   GlobalEngineOptions options = final_solve;
@@ -389,16 +458,11 @@ GlobalEngineOptions AuditModelOptions(const GlobalEngineOptions& final_solve, Au
   return options;
 }
 
-}  // namespace
-
-PrunedGlobalEngineStep PruneAndAudit(const PrunedGlobalEngineOptions& options, const ViewGraph& graph,
-                                     const SfmData& views_and_intrinsics, const FeaturesPerView& features,
-                                     ViewGraph* pruned, SfmData* model, PrunedGlobalEngineReport* report,
-                                     const ProgressCallback& progress) {
-  options.Check();
-  *report = PrunedGlobalEngineReport();
-  *pruned = graph;
-  PruneViewGraph(options.pruning, pruned, views_and_intrinsics, features, &report->pruning, progress);
+// The model audit (ModelEdgeAuditOptions) of the pruned graph *pruned; kPruned when it is off.
+PrunedGlobalEngineStep AuditTransfers(const PrunedGlobalEngineOptions& options, const ViewGraph& graph,
+                                      const SfmData& views_and_intrinsics, const FeaturesPerView& features,
+                                      ViewGraph* pruned, SfmData* model, PrunedGlobalEngineReport* report,
+                                      const ProgressCallback& progress) {
   if (!options.pruning.audit.enabled) return PrunedGlobalEngineStep::kPruned;
   RunGlobalEngine(AuditModelOptions(options.engine, options.pruning.audit.model_schedule), *pruned,
                   views_and_intrinsics, features, model, &report->engine, progress);
@@ -413,6 +477,23 @@ PrunedGlobalEngineStep PruneAndAudit(const PrunedGlobalEngineOptions& options, c
   return changed ? PrunedGlobalEngineStep::kAuditedWithChanges : PrunedGlobalEngineStep::kAudited;
 }
 
+}  // namespace
+
+PrunedGlobalEngineStep PruneAndAudit(const PrunedGlobalEngineOptions& options, const ViewGraph& graph,
+                                     const SfmData& views_and_intrinsics, const FeaturesPerView& features,
+                                     ViewGraph* pruned, SfmData* model, PrunedGlobalEngineReport* report,
+                                     const ProgressCallback& progress) {
+  options.Check();
+  *report = PrunedGlobalEngineReport();
+  *pruned = graph;
+  PruneViewGraph(options.pruning, pruned, views_and_intrinsics, features, &report->pruning, progress);
+  const PrunedGlobalEngineStep step = AuditTransfers(options, graph, views_and_intrinsics, features, pruned, model,
+                                                     report, progress);
+  const MissingCorrespondenceOptions& check = options.pruning.missing_correspondences;
+  if (!check.enabled || check.max_rounds == 0 || step == PrunedGlobalEngineStep::kAuditModelFailed) return step;
+  return CheckMissingCorrespondences(options, views_and_intrinsics, features, pruned, model, report, progress);
+}
+
 void RunPrunedGlobalEngine(const PrunedGlobalEngineOptions& options, const ViewGraph& graph,
                            const SfmData& views_and_intrinsics, const FeaturesPerView& features, SfmData* out,
                            PrunedGlobalEngineReport* report, const ProgressCallback& progress) {
@@ -425,7 +506,11 @@ void RunPrunedGlobalEngine(const PrunedGlobalEngineOptions& options, const ViewG
     RunGlobalEngine(options.engine, pruned, views_and_intrinsics, features, out, &result.engine, progress);
     return;
   }
-  if (step == PrunedGlobalEngineStep::kAuditModelFailed) return;
+  if (step == PrunedGlobalEngineStep::kAuditModelFailed || step == PrunedGlobalEngineStep::kSolved) return;
+  if (step == PrunedGlobalEngineStep::kSolvedBeforeChanges) {
+    RunGlobalEngine(options.engine, pruned, views_and_intrinsics, features, out, &result.engine, progress);
+    return;
+  }
   if (options.pruning.audit.refine_final) {
     // An adjusted audit model has had the first of the final solve's adjustment rounds.
     GlobalEngineOptions refine = options.engine;

@@ -22,7 +22,10 @@
 // (model_edge_audit.hpp) that solve runs the audit's lighter schedule, the inter-subgraph edges are
 // judged against its model, removed ones that it transfers re-admitted and kept ones it does not
 // removed, and the audited graph is adjusted from that model's poses (RefineGlobalModel) or solved
-// again (ModelEdgeAuditOptions::model_schedule, refine_final).
+// again (ModelEdgeAuditOptions::model_schedule, refine_final). With the missing-correspondence check
+// (missing_correspondence_check.hpp, on by default) the pruned graph is solved, the kept edges
+// between subgraphs whose views miss the landmarks the model predicts in them are removed, and it is
+// solved again, while edges go.
 #pragma once
 
 #include <string>
@@ -30,6 +33,7 @@
 
 #include "sfm_pruning/global/global_engine.hpp"
 #include "sfm_pruning/pruning/landmark_match_check.hpp"
+#include "sfm_pruning/pruning/missing_correspondence_check.hpp"
 #include "sfm_pruning/pruning/model_edge_audit.hpp"
 #include "sfm_pruning/pruning/pair_trust.hpp"
 #include "sfm_pruning/pruning/recursive_partition.hpp"
@@ -74,6 +78,10 @@ struct ViewGraphPruningOptions {
   // The kept edges between subgraphs lose the matches their subgraphs' landmarks contradict
   // (landmark_match_check.hpp; off when max_angle_deg is 0).
   LandmarkMatchCheckOptions landmark_check;
+  // The kept edges between subgraphs judged by the landmarks they miss in the model solved from the
+  // pruned graph, solved and judged again while edges go (missing_correspondence_check.hpp; applied
+  // by PruneAndAudit, not PruneViewGraph).
+  MissingCorrespondenceOptions missing_correspondences;
 
   // Throws std::invalid_argument naming the first field out of range (util/option_checks.hpp).
   void Check() const;
@@ -134,6 +142,8 @@ struct ViewGraphPruningReport {
   size_t audit_removed = 0;
   // The landmark check of the matches between aligned subgraphs (ViewGraphPruningOptions::landmark_check).
   LandmarkMatchCheckReport landmark_check;
+  // The rounds of the missing-correspondence check (ViewGraphPruningOptions::missing_correspondences).
+  std::vector<MissingCorrespondenceRound> missing_correspondence_rounds;
   std::vector<StageTiming> timings;  // "subgraph partition", "inter-subgraph pruning" (+ the audit's)
   double total_seconds = 0.0;
 };
@@ -177,12 +187,17 @@ enum class PrunedGlobalEngineStep {
   kAuditModelFailed,    // the solve of the pruned graph failed (report->engine says why): no audit
   kAudited,             // audited, no edge changed: *model is the audit's model of *pruned
   kAuditedWithChanges,  // audited, edges re-admitted or removed: *model predates them
+  kSolved,              // the missing-correspondence check removed nothing in its last round:
+                        // *model is the final solve of *pruned
+  kSolvedBeforeChanges,  // its last round removed edges: *model predates them (solve again)
 };
 
 // GLOBAL_PRUNED's whole pruning, the part `prunesfm prune` shares with the engine: PruneViewGraph
 // on a copy of `graph` into *pruned, then, when the audit is on, the solve of the pruned graph
-// into *model and the audit of the removed and kept edges against it (ModelEdgeAuditOptions).
-// Throws std::invalid_argument when options.Check() does.
+// into *model and the audit of the removed and kept edges against it (ModelEdgeAuditOptions);
+// then, when the missing-correspondence check is on, its rounds: the final solve of *pruned into
+// *model, the kept edges between subgraphs judged against it, those that miss the landmarks it
+// predicts removed, and again (MissingCorrespondenceOptions). Throws std::invalid_argument when options.Check() does.
 PrunedGlobalEngineStep PruneAndAudit(const PrunedGlobalEngineOptions& options, const ViewGraph& graph,
                                      const SfmData& views_and_intrinsics, const FeaturesPerView& features,
                                      ViewGraph* pruned, SfmData* model, PrunedGlobalEngineReport* report,

@@ -22,6 +22,8 @@ std::string EdgeInvalidReasonName(EdgeInvalidReason reason) {
       return "model_disagreement";
     case EdgeInvalidReason::kLandmarkDisagreement:
       return "landmark_disagreement";
+    case EdgeInvalidReason::kMissingCorrespondences:
+      return "missing_correspondences";
     case EdgeInvalidReason::kOther:
       return "other";
   }
@@ -50,6 +52,8 @@ std::string EdgeMeasureName(EdgeMeasure measure) {
       return "agreeing_share";
     case EdgeMeasure::kMatchesLeft:
       return "matches_left";
+    case EdgeMeasure::kObservedShare:
+      return "observed_share";
     case EdgeMeasure::kCorrespondences:
       return "correspondences";
     case EdgeMeasure::kVotingEdges:
@@ -75,6 +79,8 @@ EdgeMeasure DefaultEdgeMeasure(EdgeInvalidReason reason) {
       return EdgeMeasure::kAgreeingShare;
     case EdgeInvalidReason::kLandmarkDisagreement:
       return EdgeMeasure::kMatchesLeft;
+    case EdgeInvalidReason::kMissingCorrespondences:
+      return EdgeMeasure::kObservedShare;
     case EdgeInvalidReason::kNone:
     case EdgeInvalidReason::kOther:
       return EdgeMeasure::kOfReason;

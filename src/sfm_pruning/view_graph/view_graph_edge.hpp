@@ -28,6 +28,8 @@ enum class EdgeInvalidReason {
                                // share required (pruning/model_edge_audit.hpp)
   kLandmarkDisagreement,       // value: matches left after the landmark check, threshold: the minimum
                                // (pruning/landmark_match_check.hpp)
+  kMissingCorrespondences,     // value: share of the landmarks the model predicts in its views that they
+                               // observe, threshold: the round's bound (pruning/missing_correspondence_check.hpp)
   kOther,                      // any other stage; value is stage-defined
 };
 
@@ -48,6 +50,7 @@ enum class EdgeMeasure {
   kTrust,                // pair trust (pruning/pair_trust.hpp): 1 = as distinctive as a true edge
   kAgreeingShare,        // share of the matches whose landmark projects onto the partner feature
   kMatchesLeft,          // matches left after a match-level check, threshold: the minimum kept
+  kObservedShare,        // share of the predicted landmarks observed, threshold: the round's bound
   kCorrespondences,      // 2D-3D correspondences that could place the edge, threshold: the minimum
   kVotingEdges,          // edges between the edge's two subgraphs, threshold: the minimum for a vote
 };

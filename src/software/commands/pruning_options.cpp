@@ -236,6 +236,38 @@ void AddLandmarkCheckFlags(CLI::App* group, sfm_pruning::LandmarkMatchCheckOptio
       ->capture_default_str();
 }
 
+// The missing-correspondence check of the kept edges between subgraphs (not in the paper;
+// docs/pruning.md).
+void AddMissingCorrespondenceFlags(CLI::App* group, sfm_pruning::MissingCorrespondenceOptions* check) {
+  group->add_option("--prune_missing_correspondences_enabled", check->enabled,
+                    "Solve the pruned graph, remove the kept edges between subgraphs whose views miss the "
+                    "landmarks the model predicts in them far more than the scene's other such edges do, and "
+                    "solve again (docs/pruning.md)")
+      ->capture_default_str();
+  group->add_option("--prune_missing_correspondences_max_rounds", check->max_rounds,
+                    "Missing correspondences: rounds of solve, judge and remove at most (each costs a solve)")
+      ->check(CLI::Range(0, 100))
+      ->capture_default_str();
+  group->add_option("--prune_missing_correspondences_max_viewing_angle_deg", check->max_viewing_angle_deg,
+                    "Missing correspondences: a landmark is predicted in a view that sees it within this angle of "
+                    "the observing view's direction")
+      ->check(RangeValue(1e-6, 90.0))
+      ->capture_default_str();
+  group->add_option("--prune_missing_correspondences_max_distance_ratio", check->max_distance_ratio,
+                    "Missing correspondences: ... and from within this factor of the observing view's distance")
+      ->check(RangeValue(1.0, 1e6))
+      ->capture_default_str();
+  group->add_option("--prune_missing_correspondences_min_predicted_landmarks", check->min_predicted_landmarks,
+                    "Missing correspondences: edges with fewer predicted landmarks in either direction are not judged")
+      ->check(CLI::Range(1, 1000000))
+      ->capture_default_str();
+  group->add_option("--prune_missing_correspondences_max_robust_deviations", check->max_robust_deviations,
+                    "Missing correspondences: an edge is removed when its observed share (its better direction) lies more than this many "
+                    "robust standard deviations (1.4826 x MAD) below the median of the judged edges")
+      ->check(RangeValue(1e-6, 1e3))
+      ->capture_default_str();
+}
+
 // What ranks the subgraph pairs of the loop check, and the longer cycles it judges.
 void AddPairTrustFlags(CLI::App* group, sfm_pruning::ViewGraphPruningOptions* options) {
   group->add_option("--prune_subgraph_loops_min_edges_for_trust", options->loops.min_edges_for_trust,
@@ -285,6 +317,7 @@ void AddPruningOptions(CLI::App* cmd, sfm_pruning::ViewGraphPruningOptions* opti
   AddSubgraphLoopFlags(group, &options->loops);
   AddLandmarkCheckFlags(group, &options->landmark_check);
   AddPairTrustFlags(group, options);
+  AddMissingCorrespondenceFlags(group, &options->missing_correspondences);
   // The preset is the one choice most runs make; every other pruning flag studies or adjusts the
   // method, and `--help` lists them only under --help_all.
   MarkExpertExcept(group, "--prune_preset");

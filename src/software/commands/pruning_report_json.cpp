@@ -190,6 +190,15 @@ nlohmann::json ModelAuditJson(const sfm_pruning::ViewGraphPruningReport& pruning
           {"removed", pruning.audit_removed}};
 }
 
+// "missing_correspondences": each round of the check, with the edges it removed.
+nlohmann::json MissingCorrespondenceRoundJson(const sfm_pruning::MissingCorrespondenceRound& round) {
+  return {{"edges_measured", round.edges.size()},
+          {"edges_judged", round.num_judged},
+          {"median_observed_share", round.median_share},
+          {"bound", round.bound},
+          {"removed", ArrayJson(round.removed, ViewPairJson)}};
+}
+
 // "phases": the time of each stage.
 nlohmann::json StageTimingJson(const sfm_pruning::StageTiming& timing) {
   return {{"stage", timing.stage}, {"seconds", timing.seconds}};
@@ -212,12 +221,26 @@ nlohmann::json PruningReportJson(const sfm_pruning::ViewGraphPruningReport& prun
           {"subgraph_cycles", ArrayJson(pruning.cycles, SubgraphCycleJson)},
           {"removed_edges", ArrayJson(pruning.removed_edges, RemovedEdgeJson)},
           {"landmark_check", LandmarkCheckJson(pruning.landmark_check)},
-          {"model_audit", ModelAuditJson(pruning)}};
+          {"model_audit", ModelAuditJson(pruning)},
+          {"missing_correspondences", ArrayJson(pruning.missing_correspondence_rounds, MissingCorrespondenceRoundJson)}};
 }
 
 void WriteJsonAtomically(const nlohmann::json& report, const std::filesystem::path& path) {
   sfm_pruning::WriteFileAtomically(path, false, [&](std::ostream& out) { out << report.dump(2) << "\n"; });
 }
+
+namespace {
+
+// "; missing correspondences: N edges removed in R rounds", or nothing when the check did not run.
+std::string MissingCorrespondenceSummary(const std::vector<sfm_pruning::MissingCorrespondenceRound>& rounds) {
+  if (rounds.empty()) return "";
+  size_t removed = 0;
+  for (const auto& round : rounds) removed += round.removed.size();
+  return "; missing correspondences: " + std::to_string(removed) + " edges removed in " +
+         std::to_string(rounds.size()) + (rounds.size() == 1 ? " round" : " rounds");
+}
+
+}  // namespace
 
 std::string PruningSummary(const sfm_pruning::ViewGraphPruningReport& pruning) {
   char seconds[32];
@@ -233,7 +256,8 @@ std::string PruningSummary(const sfm_pruning::ViewGraphPruningReport& pruning) {
                     std::to_string(pruning.landmark_check.num_matches) + " matches dropped") +
          (pruning.audit.empty() ? std::string()
                                 : "; model audit: " + std::to_string(pruning.audit_readmitted) + " re-admitted, " +
-                                      std::to_string(pruning.audit_removed) + " removed");
+                                      std::to_string(pruning.audit_removed) + " removed") +
+         MissingCorrespondenceSummary(pruning.missing_correspondence_rounds);
 }
 
 }  // namespace prunesfm

@@ -74,6 +74,8 @@ nlohmann::json TimingsJson(const EngineSettings& settings, const sfm_pruning::Vi
     json["prune_audit_model_schedule"] = AuditModelName(settings.pruning.audit.model_schedule);
     json["prune_audit_refine_final"] = settings.pruning.audit.refine_final;
     json["prune_landmark_check_max_angle_deg"] = settings.pruning.landmark_check.max_angle_deg;
+    json["prune_missing_correspondences_enabled"] = settings.pruning.missing_correspondences.enabled;
+    json["prune_missing_correspondences_max_rounds"] = settings.pruning.missing_correspondences.max_rounds;
     json["prune_max_enumerated_samples"] = settings.pruning.alignment.max_enumerated_samples;
     json["prune_bisect_unsplittable"] = settings.pruning.partition.bisect_unsplittable;
     json["prune_max_baseline_ratio_factor"] =
