@@ -4,13 +4,13 @@
 #include <map>
 #include <utility>
 
+#include "sfm_pruning/sfm/pose.hpp"
 #include "sfm_pruning/util/option_checks.hpp"
 #include "sfm_pruning/util/statistics.hpp"
 
 namespace sfm_pruning {
 namespace {
 
-constexpr double kDegreesToRadians = 3.14159265358979323846 / 180.0;
 // Median absolute deviation to the standard deviation of a normal distribution.
 constexpr double kMadToSigma = 1.4826;
 
@@ -54,7 +54,7 @@ ObservedLandmarks CountOneDirection(const SfmData& model, const std::map<IndexT,
   const Pose& pose = model.PoseOf(view);
   const Pose& observer = model.PoseOf(model.views.at(observer_id));
   const CameraIntrinsics& intrinsics = model.IntrinsicsOf(view);
-  const double min_cos_angle = std::cos(options.max_viewing_angle_deg * kDegreesToRadians);
+  const double min_cos_angle = std::cos(DegToRad(options.max_viewing_angle_deg));
   for (const IndexT landmark_id : observed_by->second) {
     const Landmark& landmark = model.structure.at(landmark_id);
     if (!Predicted(landmark.X, pose, intrinsics, observer, min_cos_angle, options.max_distance_ratio)) continue;
