@@ -1,8 +1,9 @@
 // prunesfm prune: the view-graph pruning of GLOBAL_PRUNED as a filter for other tools. It builds
 // the verified view graph of the input, prunes it exactly as GLOBAL_PRUNED does (PruneAndAudit:
-// the partition and votes, the landmark check's match removals, the model audit against a solve
-// of the pruned graph), and writes the input again without what the pruning removed, so COLMAP's
-// or GLOMAP's mapper (or OpenMVG's) runs on a cleaned graph:
+// the partition and votes, the landmark check's match removals, the missing-correspondence check
+// and, when enabled, the model audit, each against a solve of the pruned graph), and writes the
+// input again without what the pruning removed, so COLMAP's or GLOMAP's mapper (or OpenMVG's)
+// runs on a cleaned graph:
 //   --database DB --output DB2: a copy of the COLMAP database whose two_view_geometries rows of
 //       the removed pairs are deleted and whose kept rows lose the inliers the landmark check
 //       dropped (everything else byte for byte, the matches table too: the mappers build their
@@ -148,9 +149,45 @@ fs::path CheckedReportPath(const PruneArguments& args) {
   return report_path;
 }
 
+// The input again without what the pruning changed (the header says how per format); returns
+// the number of pairs the input held.
+size_t WriteFilteredInput(const PruneArguments& args, const sfm_pruning::ReconstructionInput& input,
+                          bool verified_here, const sfm_pruning::ViewGraph& pruned, const PrunedPairs& changes) {
+  const std::set<ViewPair> keep = PairsToKeep(input, changes.removed);
+  if (verified_here) {
+    sfm_pruning::CopyColmapDatabaseWithGeometries(args.database, args.output, ColmapGeometriesOf(pruned));
+    return input.putative.size();
+  }
+  if (!args.database.empty()) {
+    sfm_pruning::CopyColmapDatabaseKeepingPairs(args.database, args.output, keep, changes.dropped_matches);
+    return input.verified.size();
+  }
+  sfm_pruning::WriteOpenMvgMatches(args.output, KeptMatches(input.putative, keep, changes.dropped_matches));
+  return input.putative.size();
+}
+
+// The report's "filter" section: what went in and out, the settings, the time of each stage.
+nlohmann::json FilterJson(const PruneArguments& args, const sfm_pruning::ReconstructionInput& input,
+                          bool verified_here, size_t num_pairs, const PrunedPairs& changes,
+                          const sfm_pruning::ViewGraphBuildReport& build, const nlohmann::json& seconds) {
+  const bool colmap = !args.database.empty();
+  return {{"input", colmap ? args.database : input.source},
+          {"output", args.output},
+          {"format", colmap ? "colmap_database" : "openmvg_matches"},
+          {"verified_here", verified_here},
+          {"input_pairs", num_pairs},
+          {"removed_pairs", changes.removed.size()},
+          {"pairs_with_matches_dropped", changes.dropped_matches.size()},
+          {"matches_dropped", NumMatches(changes.dropped_matches)},
+          {"rejected_by_verification_kept", build.rejected_pairs.size()},
+          {"seed", args.settings.seed},
+          {"num_threads", sfm_pruning::ResolveThreadCount(args.settings.num_threads)},
+          {"solver_threads", args.settings.solver_threads},
+          {"seconds", seconds}};
+}
+
 void RunPrune(const PruneArguments& args) {
   const bool colmap = !args.database.empty();
-  const fs::path output = args.output;
   const fs::path report_path = CheckedReportPath(args);
 
   StageClock clock;
@@ -182,8 +219,8 @@ void RunPrune(const PruneArguments& args) {
   Info("view graph: " + std::to_string(graph.NumValidEdges()) + " edges of " + std::to_string(build.num_pairs) +
        " pairs, " + std::to_string(graph.NumNodes()) + " views");
 
-  // GLOBAL_PRUNED's pruning, all of it: the view-graph pruning with its landmark check and, unless
-  // --prune_audit_enabled false, the audit against a solve of the pruned graph.
+  // GLOBAL_PRUNED's pruning, all of it: the view-graph pruning with its landmark check, the audit
+  // and the missing-correspondence check when they are on.
   sfm_pruning::ViewGraph pruned;
   sfm_pruning::SfmData audit_model;
   sfm_pruning::PrunedGlobalEngineReport engine_report;
@@ -196,47 +233,23 @@ void RunPrune(const PruneArguments& args) {
   if (step == sfm_pruning::PrunedGlobalEngineStep::kAuditModelFailed) {
     Info("model audit skipped: the solve of the pruned graph failed (" + engine_report.engine.message + ")");
   }
-  const sfm_pruning::ViewGraphPruningReport& pruning = engine_report.pruning;
   const double prune_seconds = clock.Lap();
-  Info("pruning: " + PruningSummary(pruning));
+  Info("pruning: " + PruningSummary(engine_report.pruning));
 
   const PrunedPairs changes = ChangesOfPruning(graph, pruned);
-  const std::set<ViewPair> keep = PairsToKeep(input, changes.removed);
-  size_t num_pairs = 0;
-  if (verified_here) {
-    num_pairs = input.putative.size();
-    sfm_pruning::CopyColmapDatabaseWithGeometries(args.database, output, ColmapGeometriesOf(pruned));
-  } else if (colmap) {
-    num_pairs = input.verified.size();
-    sfm_pruning::CopyColmapDatabaseKeepingPairs(args.database, output, keep, changes.dropped_matches);
-  } else {
-    num_pairs = input.putative.size();
-    sfm_pruning::WriteOpenMvgMatches(output, KeptMatches(input.putative, keep, changes.dropped_matches));
-  }
+  const size_t num_pairs = WriteFilteredInput(args, input, verified_here, pruned, changes);
   const double write_seconds = clock.Lap();
 
-  nlohmann::json report = PruningReportJson(pruning);
-  report["filter"] = {{"input", colmap ? args.database : input.source},
-                      {"output", output.string()},
-                      {"format", colmap ? "colmap_database" : "openmvg_matches"},
-                      {"verified_here", verified_here},
-                      {"input_pairs", num_pairs},
-                      {"removed_pairs", changes.removed.size()},
-                      {"pairs_with_matches_dropped", changes.dropped_matches.size()},
-                      {"matches_dropped", NumMatches(changes.dropped_matches)},
-                      {"rejected_by_verification_kept", build.rejected_pairs.size()},
-                      {"seed", args.settings.seed},
-                      {"num_threads", sfm_pruning::ResolveThreadCount(args.settings.num_threads)},
-                      {"solver_threads", args.settings.solver_threads},
-                      {"seconds",
-                       {{"read input", read_seconds},
-                        {"focal calibration", calibration_seconds},
-                        {"verification", verify_seconds},
-                        {"pruning", prune_seconds},
-                        {"write output", write_seconds}}}};
+  nlohmann::json report = PruningReportJson(engine_report.pruning);
+  report["filter"] = FilterJson(args, input, verified_here, num_pairs, changes, build,
+                                {{"read input", read_seconds},
+                                 {"focal calibration", calibration_seconds},
+                                 {"verification", verify_seconds},
+                                 {"pruning", prune_seconds},
+                                 {"write output", write_seconds}});
   if (!calibration.is_null()) report["filter"]["focal_calibration"] = std::move(calibration);
   WriteJsonAtomically(report, report_path);
-  Info("wrote " + output.string() + " (" + std::to_string(num_pairs - changes.removed.size()) + " of " +
+  Info("wrote " + args.output + " (" + std::to_string(num_pairs - changes.removed.size()) + " of " +
        std::to_string(num_pairs) + " pairs kept) and " + report_path.string());
 }
 
