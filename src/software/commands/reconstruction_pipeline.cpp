@@ -5,9 +5,13 @@
 #include <chrono>
 #include <cstdio>
 #include <filesystem>
+#include <map>
 #include <optional>
 #include <set>
 #include <stdexcept>
+#include <string>
+#include <utility>
+#include <vector>
 
 #include <nlohmann/json.hpp>
 
@@ -29,6 +33,29 @@
 
 namespace prunesfm {
 namespace {
+
+// "stage 1.23 s, ..." in order of first appearance; a stage that ran several times (the solves of
+// the missing-correspondence rounds) is summed: "stage 412.58 s (3 runs)". timings.json keeps each run.
+std::string StageSecondsLine(const nlohmann::json& stages) {
+  std::vector<std::string> order;
+  std::map<std::string, std::pair<double, int>> totals;  // seconds, runs
+  for (const auto& stage : stages) {
+    const std::string name = stage.at("stage").get<std::string>();
+    auto [entry, added] = totals.emplace(name, std::make_pair(0.0, 0));
+    if (added) order.push_back(name);
+    entry->second.first += stage.at("seconds").get<double>();
+    ++entry->second.second;
+  }
+  std::string line;
+  for (const std::string& name : order) {
+    char seconds[32];
+    std::snprintf(seconds, sizeof(seconds), "%.2f", totals.at(name).first);
+    const int runs = totals.at(name).second;
+    line += (line.empty() ? "" : ", ") + name + " " + seconds + " s" +
+            (runs > 1 ? " (" + std::to_string(runs) + " runs)" : "");
+  }
+  return line;
+}
 namespace fs = std::filesystem;
 using sfm_pruning::Error;
 
@@ -344,15 +371,9 @@ void RunReconstruction(const EngineSettings& settings, const sfm_pruning::Recons
   WriteModelOutputs(model, input.features, output);
   sfm_pruning::WriteRunViewGraph(result.view_graph, output / "view_graph.json");
   WriteJsonAtomically(timings, output / "timings.json");  // last: the run is complete
-  std::string stages;
-  for (const auto& stage : timings.at("stages")) {
-    char seconds[32];
-    std::snprintf(seconds, sizeof(seconds), "%.2f", stage.at("seconds").get<double>());
-    stages += (stages.empty() ? "" : ", ") + stage.at("stage").get<std::string>() + " " + seconds + " s";
-  }
   Info("registered " + std::to_string(report.num_registered_views) + " of " + std::to_string(input.scene.views.size()) +
        " views, " + std::to_string(report.num_landmarks) + " points, RMS " + std::to_string(report.final_rms_px) +
-       " px; " + stages);
+       " px; " + StageSecondsLine(timings.at("stages")));
   if (report.distortion.tested) {
     char evidence[160];
     std::snprintf(evidence, sizeof(evidence), "lens distortion %s: its adjustment saved %.1f, the criterion asks %.1f",
