@@ -164,5 +164,22 @@ TEST(ReportDrawing, TimingBarsCoverTheUnionOfStages) {
   EXPECT_NE(svg.find("B: subgraph partition 3 s"), std::string::npos);
 }
 
+TEST(ReportDrawing, RepeatedStagesAreSummedInTheOrderTheyFirstAppear) {
+  const std::vector<StageTotal> totals =
+      TotalsByStage({{"partition", 2.0}, {"solve", 1.5}, {"check", 0.25}, {"solve", 2.5}, {"check", 0.25},
+                     {"adjustment", 1.0}});
+  ASSERT_EQ(totals.size(), 4u);
+  EXPECT_EQ(totals[1].stage, "solve");
+  EXPECT_DOUBLE_EQ(totals[1].seconds, 4.0);
+  EXPECT_EQ(totals[1].runs, 2);
+  EXPECT_EQ(totals[2].stage, "check");
+  EXPECT_EQ(totals[3].stage, "adjustment");
+  EXPECT_EQ(totals[3].runs, 1);
+  // The timing bars draw each stage once, with its total.
+  const std::string svg = DrawTimingsSvg({{"A", {{"solve", 1.5}, {"check", 0.25}, {"solve", 2.5}}}});
+  EXPECT_EQ(Count(svg, "<rect"), 2u);
+  EXPECT_NE(svg.find("A: solve 4 s"), std::string::npos);
+}
+
 }  // namespace
 }  // namespace sfm_pruning::testing

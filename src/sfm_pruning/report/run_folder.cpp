@@ -1,5 +1,7 @@
 #include "sfm_pruning/report/run_folder.hpp"
 
+#include <algorithm>
+
 #include "sfm_pruning/io/model_io.hpp"
 #include "sfm_pruning/report/json_file.hpp"
 #include "sfm_pruning/util/error.hpp"
@@ -48,6 +50,18 @@ PruningSummary ReadPruningSummary(const fs::path& path) {
 }
 
 }  // namespace
+
+std::vector<StageTotal> TotalsByStage(const std::vector<StageSeconds>& stages) {
+  std::vector<StageTotal> totals;
+  for (const StageSeconds& stage : stages) {
+    auto total = std::find_if(totals.begin(), totals.end(),
+                              [&](const StageTotal& entry) { return entry.stage == stage.stage; });
+    if (total == totals.end()) total = totals.insert(totals.end(), {stage.stage, 0.0, 0});
+    total->seconds += stage.seconds;
+    ++total->runs;
+  }
+  return totals;
+}
 
 RunFolder ReadRunFolder(const fs::path& path) {
   if (!fs::is_directory(path)) throw FileError(path.string(), "not a run folder (no such directory)");

@@ -22,6 +22,17 @@ struct StageSeconds {
   double seconds = 0.0;
 };
 
+// One stage's seconds summed over its runs: a stage may run several times (the solves of the
+// missing-correspondence rounds), and timings.json lists each run.
+struct StageTotal {
+  std::string stage;
+  double seconds = 0.0;
+  int runs = 0;
+};
+
+// The totals of `stages` by name, in the order the names first appear.
+std::vector<StageTotal> TotalsByStage(const std::vector<StageSeconds>& stages);
+
 struct AcceptedSubgraphSummary {
   size_t num_views = 0;
   size_t num_edges = 0;

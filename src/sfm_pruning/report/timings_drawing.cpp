@@ -15,10 +15,10 @@ std::string DrawTimingsSvg(const std::vector<TimedRun>& runs, double width) {
   std::vector<std::map<std::string, double>> seconds(runs.size());
   double longest = 1e-9;
   for (size_t r = 0; r < runs.size(); ++r) {
-    for (const StageSeconds& stage : runs[r].stages) {
-      if (std::find(stages.begin(), stages.end(), stage.stage) == stages.end()) stages.push_back(stage.stage);
-      seconds[r][stage.stage] += stage.seconds;
-      longest = std::max(longest, seconds[r][stage.stage]);
+    for (const StageTotal& total : TotalsByStage(runs[r].stages)) {
+      if (std::find(stages.begin(), stages.end(), total.stage) == stages.end()) stages.push_back(total.stage);
+      seconds[r][total.stage] = total.seconds;
+      longest = std::max(longest, total.seconds);
     }
   }
   const double label_width = 190.0, value_width = 70.0, bar_height = 13.0, row_gap = 9.0;

@@ -5,7 +5,6 @@
 #include <chrono>
 #include <cstdio>
 #include <filesystem>
-#include <map>
 #include <optional>
 #include <set>
 #include <stdexcept>
@@ -20,6 +19,7 @@
 #include "sfm_pruning/io/openmvg_sfm_data.hpp"
 #include "sfm_pruning/io/ply.hpp"
 #include "sfm_pruning/pruning/view_graph_pruning.hpp"
+#include "sfm_pruning/report/run_folder.hpp"
 #include "sfm_pruning/report/run_view_graph.hpp"
 #include "sfm_pruning/util/atomic_file.hpp"
 #include "sfm_pruning/util/error.hpp"
@@ -33,31 +33,26 @@
 
 namespace prunesfm {
 namespace {
+namespace fs = std::filesystem;
+using sfm_pruning::Error;
 
-// "stage 1.23 s, ..." in order of first appearance; a stage that ran several times (the solves of
-// the missing-correspondence rounds) is summed: "stage 412.58 s (3 runs)". timings.json keeps each run.
-std::string StageSecondsLine(const nlohmann::json& stages) {
-  std::vector<std::string> order;
-  std::map<std::string, std::pair<double, int>> totals;  // seconds, runs
-  for (const auto& stage : stages) {
-    const std::string name = stage.at("stage").get<std::string>();
-    auto [entry, added] = totals.emplace(name, std::make_pair(0.0, 0));
-    if (added) order.push_back(name);
-    entry->second.first += stage.at("seconds").get<double>();
-    ++entry->second.second;
+// "stage 1.23 s, ..." in the order the stages first appear; a stage that ran several times (the
+// solves of the missing-correspondence rounds) is summed: "stage 412.58 s (3 runs)".
+// timings.json keeps each run.
+std::string StageSecondsLine(const nlohmann::json& stage_list) {
+  std::vector<sfm_pruning::StageSeconds> stages;
+  for (const auto& stage : stage_list) {
+    stages.push_back({stage.at("stage").get<std::string>(), stage.at("seconds").get<double>()});
   }
   std::string line;
-  for (const std::string& name : order) {
+  for (const sfm_pruning::StageTotal& total : sfm_pruning::TotalsByStage(stages)) {
     char seconds[32];
-    std::snprintf(seconds, sizeof(seconds), "%.2f", totals.at(name).first);
-    const int runs = totals.at(name).second;
-    line += (line.empty() ? "" : ", ") + name + " " + seconds + " s" +
-            (runs > 1 ? " (" + std::to_string(runs) + " runs)" : "");
+    std::snprintf(seconds, sizeof(seconds), "%.2f", total.seconds);
+    line += (line.empty() ? "" : ", ") + total.stage + " " + seconds + " s" +
+            (total.runs > 1 ? " (" + std::to_string(total.runs) + " runs)" : "");
   }
   return line;
 }
-namespace fs = std::filesystem;
-using sfm_pruning::Error;
 
 double SecondsSince(std::chrono::steady_clock::time_point start) {
   return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
