@@ -10,13 +10,6 @@
 namespace sfm_pruning {
 namespace {
 
-// Ground truth i -> j from the scene's absolute poses, with |t| = 1 as the estimator returns it.
-RelativePose TrueRelativePose(const testing::SyntheticScene& scene) {
-  RelativePose truth = RelativePoseBetween(scene.poses[0], scene.poses[1]);
-  truth.translation.normalize();
-  return truth;
-}
-
 double RotationError(const RelativePose& a, const RelativePose& b) {
   return LogSO3(a.rotation.transpose() * b.rotation).norm();
 }
@@ -45,7 +38,7 @@ TEST(OpenGVRelativePose, NoiseFreeRecoversThePoseInOurConvention) {
       options.solver = solver;
       const RelativePoseResult result = EstimateRelativePose(scene.bearings[0], scene.bearings[1], options);
       ASSERT_TRUE(result.success) << result.reason;
-      const RelativePose truth = TrueRelativePose(scene);
+      const RelativePose truth = testing::TrueRelativePose(scene);
       EXPECT_LT(RotationError(result.relative_pose, truth), 1e-6) << "seed " << seed;
       EXPECT_LT(DirectionError(result.relative_pose, truth), 1e-6) << "seed " << seed;
       EXPECT_NEAR(result.relative_pose.translation.norm(), 1.0, 1e-12);
@@ -61,7 +54,7 @@ TEST(OpenGVRelativePose, NoisyWithOutliers) {
     const testing::SyntheticScene scene = testing::MakeSyntheticScene(2, {200, 0.5, 0.25, true, seed});
     const RelativePoseResult result = EstimateRelativePose(scene.bearings[0], scene.bearings[1]);
     ASSERT_TRUE(result.success) << result.reason;
-    const RelativePose truth = TrueRelativePose(scene);
+    const RelativePose truth = testing::TrueRelativePose(scene);
     EXPECT_LT(RadToDeg(RotationError(result.relative_pose, truth)), 0.5) << "seed " << seed;
     EXPECT_LT(RadToDeg(DirectionError(result.relative_pose, truth)), 0.5) << "seed " << seed;
     EXPECT_GE(InlierRecall(scene, result.inliers), 0.95) << "seed " << seed;
@@ -85,7 +78,7 @@ TEST(OpenGVRelativePose, PrecisionCheckKeepsTheRightModelAndTheFullThresholdsInl
     tight.max_angular_error_deg *= options.precision_check_ratio;
     const RelativePoseResult tight_only = EstimateRelativePose(scene.bearings[0], scene.bearings[1], tight);
     ASSERT_TRUE(single.success && checked.success && tight_only.success);
-    const RelativePose truth = TrueRelativePose(scene);
+    const RelativePose truth = testing::TrueRelativePose(scene);
     EXPECT_LT(RadToDeg(RotationError(checked.relative_pose, truth)), 0.5) << "seed " << seed;
     EXPECT_LT(RadToDeg(DirectionError(checked.relative_pose, truth)), 0.5) << "seed " << seed;
     EXPECT_GE(InlierRecall(scene, checked.inliers), InlierRecall(scene, single.inliers) - 0.01) << "seed " << seed;
@@ -100,7 +93,7 @@ TEST(OpenGVRelativePose, MinimalSamplesCopeWithALowInlierRatio) {
   const testing::SyntheticScene scene = testing::MakeSyntheticScene(2, {400, 0.5, 0.65, true, 1});
   const RelativePoseResult result = EstimateRelativePose(scene.bearings[0], scene.bearings[1]);
   ASSERT_TRUE(result.success) << result.reason;
-  const RelativePose truth = TrueRelativePose(scene);
+  const RelativePose truth = testing::TrueRelativePose(scene);
   EXPECT_LT(RadToDeg(RotationError(result.relative_pose, truth)), 0.5);
   EXPECT_LT(RadToDeg(DirectionError(result.relative_pose, truth)), 0.5);
   EXPECT_GE(InlierRecall(scene, result.inliers), 0.95);

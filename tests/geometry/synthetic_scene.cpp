@@ -86,4 +86,10 @@ SyntheticScene MakeSyntheticScene(int num_cameras, const SyntheticViewOptions& o
   return scene;
 }
 
+RelativePose TrueRelativePose(const SyntheticScene& scene) {
+  RelativePose truth = RelativePoseBetween(scene.poses[0], scene.poses[1]);
+  truth.translation.normalize();
+  return truth;
+}
+
 }  // namespace sfm_pruning::testing

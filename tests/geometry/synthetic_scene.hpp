@@ -46,4 +46,8 @@ struct SyntheticScene {
 // outside an image are redrawn). Outliers replace the pixel in the last camera only.
 SyntheticScene MakeSyntheticScene(int num_cameras, const SyntheticViewOptions& options);
 
+// Ground truth camera 0 -> camera 1 from the scene's absolute poses, with |t| = 1 as the relative
+// pose estimators return it.
+RelativePose TrueRelativePose(const SyntheticScene& scene);
+
 }  // namespace sfm_pruning::testing

@@ -1,10 +1,10 @@
 #include "sfm_pruning/geometry/relative_pose_refinement.hpp"
 
+#include <cmath>
 #include <limits>
-#include <memory>
 
-#include <ceres/ceres.h>
-#include <ceres/rotation.h>
+#include <Eigen/Cholesky>
+#include <ceres/jet.h>
 
 #include "sfm_pruning/geometry/so3.hpp"
 #include "sfm_pruning/util/option_checks.hpp"
@@ -12,30 +12,102 @@
 namespace sfm_pruning {
 namespace {
 
-// Angular epipolar error of one correspondence, as epipolar_geometry.hpp's AngularEpipolarError
-// but differentiable: parameters are the rotation update delta and the unit translation.
-struct AngularEpipolarCost {
-  AngularEpipolarCost(const Eigen::Vector3d& rotated_bearing_i, const Eigen::Vector3d& bearing_j)
-      : rotated_bearing_i_(rotated_bearing_i), bearing_j_(bearing_j) {}
+// The five local coordinates of the pose: a rotation increment (R <- Exp(omega) R) and a step of
+// the translation in the plane orthogonal to it (t <- normalise(t + B xi)).
+constexpr int kNumParameters = 5;
+using Jet = ceres::Jet<double, kNumParameters>;
+using Vector5d = Eigen::Matrix<double, kNumParameters, 1>;
+using Matrix5d = Eigen::Matrix<double, kNumParameters, kNumParameters>;
 
-  template <typename T>
-  bool operator()(const T* delta, const T* translation, T* residual) const {
-    using Vector3T = Eigen::Matrix<T, 3, 1>;
-    const Vector3T r0_bi = rotated_bearing_i_.cast<T>();
-    Vector3T r_bi;
-    ceres::AngleAxisRotatePoint(delta, r0_bi.data(), r_bi.data());
-    const Eigen::Map<const Vector3T> t(translation);
-    const Vector3T b_j = bearing_j_.cast<T>();
-    const Vector3T E_bi = t.cross(r_bi);
-    // The epsilon keeps the square root differentiable for a correspondence at the epipoles.
-    const T denominator = ceres::sqrt(E_bi.squaredNorm() + b_j.cross(t).squaredNorm() + T(1e-20));
-    residual[0] = b_j.dot(E_bi) / denominator;
-    return true;
+// Angular epipolar error of one correspondence (epipolar_geometry.hpp's AngularEpipolarError)
+// given the rotated bearing R b_i; the epsilon keeps the square root differentiable for a
+// correspondence at the epipoles.
+template <typename T>
+T AngularEpipolarResidual(const Eigen::Matrix<T, 3, 1>& rotated_bearing_i, const Eigen::Matrix<T, 3, 1>& translation,
+                          const Eigen::Matrix<T, 3, 1>& bearing_j) {
+  const Eigen::Matrix<T, 3, 1> E_bi = translation.cross(rotated_bearing_i);
+  const T denominator = sqrt(E_bi.squaredNorm() + bearing_j.cross(translation).squaredNorm() + T(1e-20));
+  return bearing_j.dot(E_bi) / denominator;
+}
+
+// Two unit vectors orthogonal to `t` and to each other.
+Eigen::Matrix<double, 3, 2> TangentBasis(const Eigen::Vector3d& t) {
+  const Eigen::Vector3d helper = std::abs(t.x()) < 0.9 ? Eigen::Vector3d::UnitX() : Eigen::Vector3d::UnitY();
+  Eigen::Matrix<double, 3, 2> basis;
+  basis.col(0) = t.cross(helper).normalized();
+  basis.col(1) = t.cross(basis.col(0));
+  return basis;
+}
+
+class EpipolarProblem {
+ public:
+  EpipolarProblem(const std::vector<Eigen::Vector3d>& bearings_i, const std::vector<Eigen::Vector3d>& bearings_j,
+                  const std::vector<int>& indices, double loss_scale_rad)
+      : loss_scale_sq_(loss_scale_rad > 0.0 ? loss_scale_rad * loss_scale_rad : 0.0) {
+    bearings_i_.reserve(indices.size());
+    bearings_j_.reserve(indices.size());
+    for (const int k : indices) {
+      bearings_i_.push_back(bearings_i[k].normalized());
+      bearings_j_.push_back(bearings_j[k].normalized());
+    }
   }
 
-  Eigen::Vector3d rotated_bearing_i_;  // R_0 b_i
-  Eigen::Vector3d bearing_j_;
+  // Ceres' convention: 1/2 sum of rho(r^2), rho the identity or the Cauchy loss.
+  double Cost(const RelativePose& pose) const {
+    double cost = 0.0;
+    for (size_t k = 0; k < bearings_i_.size(); ++k) {
+      const double r = AngularEpipolarResidual<double>(pose.rotation * bearings_i_[k], pose.translation, bearings_j_[k]);
+      cost += Rho(r * r);
+    }
+    return 0.5 * cost;
+  }
+
+  // Gauss-Newton normal equations at `pose` in the local coordinates, each residual weighted by
+  // the loss's derivative (iteratively reweighted least squares: the same minimum as the loss).
+  void NormalEquations(const RelativePose& pose, const Eigen::Matrix<double, 3, 2>& basis, Matrix5d* hessian,
+                       Vector5d* gradient) const {
+    hessian->setZero();
+    gradient->setZero();
+    Eigen::Matrix<Jet, 3, 1> translation;
+    for (int d = 0; d < 3; ++d) {
+      translation[d] = Jet(pose.translation[d]);
+      translation[d].v[3] = basis(d, 0);
+      translation[d].v[4] = basis(d, 1);
+    }
+    for (size_t k = 0; k < bearings_i_.size(); ++k) {
+      // d(Exp(omega) a)/d omega at omega = 0 is -[a]_x: a + omega x a to first order.
+      const Eigen::Vector3d a = pose.rotation * bearings_i_[k];
+      Eigen::Matrix<Jet, 3, 1> rotated;
+      for (int d = 0; d < 3; ++d) rotated[d] = Jet(a[d]);
+      for (int axis = 0; axis < 3; ++axis) {
+        const Eigen::Vector3d derivative = Eigen::Vector3d::Unit(axis).cross(a);
+        for (int d = 0; d < 3; ++d) rotated[d].v[axis] = derivative[d];
+      }
+      const Jet r = AngularEpipolarResidual<Jet>(rotated, translation, bearings_j_[k].cast<Jet>());
+      const double weight = Weight(r.a * r.a);
+      const Vector5d jacobian = r.v;
+      hessian->noalias() += weight * jacobian * jacobian.transpose();
+      gradient->noalias() += weight * r.a * jacobian;
+    }
+  }
+
+ private:
+  double Rho(double squared) const {
+    return loss_scale_sq_ > 0.0 ? loss_scale_sq_ * std::log1p(squared / loss_scale_sq_) : squared;
+  }
+  double Weight(double squared) const { return loss_scale_sq_ > 0.0 ? 1.0 / (1.0 + squared / loss_scale_sq_) : 1.0; }
+
+  double loss_scale_sq_;
+  std::vector<Eigen::Vector3d> bearings_i_;
+  std::vector<Eigen::Vector3d> bearings_j_;
 };
+
+RelativePose Step(const RelativePose& pose, const Eigen::Matrix<double, 3, 2>& basis, const Vector5d& step) {
+  RelativePose moved;
+  moved.rotation = ProjectToRotation(ExpSO3(step.head<3>()) * pose.rotation);
+  moved.translation = (pose.translation + basis * step.tail<2>()).normalized();
+  return moved;
+}
 
 }  // namespace
 
@@ -48,38 +120,54 @@ RelativePoseRefinementSummary RefineRelativePose(const std::vector<Eigen::Vector
   RelativePoseRefinementSummary summary;
   if (indices.size() < 5) return summary;
 
-  const Eigen::Matrix3d R0 = relative_ij->rotation;
-  double delta[3] = {0.0, 0.0, 0.0};
-  Eigen::Vector3d translation = relative_ij->translation.normalized();
+  const EpipolarProblem problem(bearings_i, bearings_j, indices, options.loss_scale_rad);
+  RelativePose pose = *relative_ij;
+  pose.translation.normalize();
+  double cost = problem.Cost(pose);
+  summary.initial_cost = cost;
+  if (!std::isfinite(cost)) return summary;
 
-  ceres::Problem problem;
-  for (const int k : indices) {
-    auto* cost = new ceres::AutoDiffCostFunction<AngularEpipolarCost, 1, 3, 3>(
-        new AngularEpipolarCost(R0 * bearings_i[k].normalized(), bearings_j[k].normalized()));
-    ceres::LossFunction* loss = options.loss_scale_rad > 0.0 ? new ceres::CauchyLoss(options.loss_scale_rad) : nullptr;
-    problem.AddResidualBlock(cost, loss, delta, translation.data());
+  // Levenberg-Marquardt on the five local coordinates. Noise-free data must converge to machine
+  // precision, hence the tolerances far below what a photogrammetric residual needs.
+  constexpr double kRelativeDecreaseTolerance = 1e-15;
+  constexpr double kGradientTolerance = 1e-15;
+  constexpr double kStepTolerance = 1e-12;
+  double damping = 1e-4;
+  for (int iteration = 0; iteration < options.max_num_iterations; ++iteration) {
+    const Eigen::Matrix<double, 3, 2> basis = TangentBasis(pose.translation);
+    Matrix5d hessian;
+    Vector5d gradient;
+    problem.NormalEquations(pose, basis, &hessian, &gradient);
+    if (gradient.lpNorm<Eigen::Infinity>() <= kGradientTolerance) break;
+    bool improved = false;
+    bool step_too_small = false;
+    while (damping < 1e16) {
+      Matrix5d damped = hessian;
+      damped.diagonal() += damping * hessian.diagonal().cwiseMax(1e-12);
+      const Vector5d step = damped.ldlt().solve(-gradient);
+      if (!step.allFinite()) break;
+      step_too_small = step.norm() <= kStepTolerance;
+      const RelativePose candidate = Step(pose, basis, step);
+      const double candidate_cost = problem.Cost(candidate);
+      if (std::isfinite(candidate_cost) && candidate_cost < cost) {
+        const double decrease = cost - candidate_cost;
+        pose = candidate;
+        cost = candidate_cost;
+        damping = std::max(damping / 10.0, 1e-12);
+        improved = decrease > kRelativeDecreaseTolerance * cost;
+        break;
+      }
+      if (step_too_small) break;
+      damping *= 10.0;
+    }
+    if (!improved || step_too_small) break;
   }
-  problem.SetManifold(translation.data(), new ceres::SphereManifold<3>());
 
-  ceres::Solver::Options solver_options;
-  solver_options.linear_solver_type = ceres::DENSE_QR;
-  solver_options.max_num_iterations = options.max_num_iterations;
-  solver_options.num_threads = 1;
-  solver_options.logging_type = ceres::SILENT;
-  solver_options.minimizer_progress_to_stdout = false;
-  // Noise-free data must converge to machine precision, not to Ceres' default 1e-6 relative cost.
-  solver_options.function_tolerance = 1e-15;
-  solver_options.gradient_tolerance = 1e-15;
-  solver_options.parameter_tolerance = 1e-12;
-  ceres::Solver::Summary ceres_summary;
-  ceres::Solve(solver_options, &problem, &ceres_summary);
-
-  summary.initial_cost = ceres_summary.initial_cost;
-  summary.final_cost = ceres_summary.final_cost;
-  summary.converged = ceres_summary.IsSolutionUsable();
+  summary.final_cost = cost;
+  summary.converged = pose.rotation.allFinite() && pose.translation.allFinite();
   if (!summary.converged) return summary;
-  relative_ij->rotation = ProjectToRotation(ExpSO3(Eigen::Vector3d(delta[0], delta[1], delta[2])) * R0);
-  relative_ij->translation = translation.normalized();
+  relative_ij->rotation = pose.rotation;
+  relative_ij->translation = pose.translation;
   return summary;
 }
 
@@ -89,7 +177,7 @@ void RelativePoseRefinementOptions::Check() const {
     RequirePositiveAtMost(loss_scale_rad, std::numeric_limits<double>::max(),
                           "RelativePoseRefinementOptions::loss_scale_rad (or <= 0: plain least squares)");
   }
-  // 0 only evaluates the initial cost (Ceres accepts it).
+  // 0 only evaluates the initial cost.
   RequireAtLeast(max_num_iterations, 0, "RelativePoseRefinementOptions::max_num_iterations");
 }
 
