@@ -310,6 +310,56 @@ def ablation_lines(args, rows):
     return lines + [""]
 
 
+def stage_seconds(args, row):
+    """{stage: seconds summed over its runs} of the run behind `row` (its timings.json), or {}."""
+    path = Path(args.work) / row["scene"] / row["input"] / row["engine"] / "result" / "timings.json"
+    if not path.is_file():
+        return {}
+    totals = {}
+    for stage in json.loads(path.read_text()).get("stages", []):
+        totals[stage["stage"]] = totals.get(stage["stage"], 0.0) + stage["seconds"]
+    return totals
+
+
+def cost_lines(args, rows):
+    """Per split, family and input: GLOBAL's time, GLOBAL_PRUNED's time over GLOBAL's, and the share
+    of GLOBAL's run spent verifying the pairs (from the stages of each run's timings.json)."""
+    by_scene = {}
+    for row in rows:
+        if row["engine"] in ("GLOBAL", "GLOBAL_PRUNED") and row["rc"] == 0:
+            by_scene.setdefault((row["split"], row["family"], row["input"], row["seed"]), {})[row["engine"]] = row
+    cells = {}
+    for (split, family, input_path, _), engines in by_scene.items():
+        if len(engines) < 2:
+            continue
+        glob_stages = stage_seconds(args, engines["GLOBAL"])
+        pruned_stages = stage_seconds(args, engines["GLOBAL_PRUNED"])
+        if not glob_stages or not pruned_stages:
+            continue
+        glob_total, pruned_total = sum(glob_stages.values()), sum(pruned_stages.values())
+        cell = cells.setdefault((split, family, input_path), {"global": [], "ratio": [], "verification": []})
+        cell["global"].append(glob_total)
+        cell["ratio"].append(pruned_total / max(glob_total, 1e-9))
+        cell["verification"].append(glob_stages.get("verification", 0.0) / max(glob_total, 1e-9))
+    if not cells:
+        return []
+    lines = ["### Cost", "",
+             "Per scene, the stages of each run (its `timings.json`, summed; one thread, two scenes at a time): "
+             "GLOBAL's time, GLOBAL_PRUNED's time over GLOBAL's (median, largest, and how many scenes stay within "
+             "1.3), and the share of GLOBAL's time spent verifying the pairs (median, largest; from COLMAP's input "
+             "this re-estimates each stored pair's pose).", "",
+             "| split | family | input | scenes | GLOBAL median s | GLOBAL_PRUNED / GLOBAL median | largest | "
+             "<= 1.3 | verification share median | largest |", "|---|---|---|---|---|---|---|---|---|---|"]
+    for (split, family, input_path), cell in sorted(cells.items()):
+        n = len(cell["ratio"])
+        lines.append(f"| {split} | {family} | {input_path} | {n} | {statistics.median(cell['global']):.1f} | "
+                     f"{statistics.median(cell['ratio']):.2f} | {max(cell['ratio']):.2f} | "
+                     f"{sum(r <= 1.3 for r in cell['ratio'])} of {n} | "
+                     f"{100 * statistics.median(cell['verification']):.0f} % | "
+                     f"{100 * max(cell['verification']):.0f} % |")
+    return lines + [""]
+
+
 def markdown(args, argv, prunesfm, rows):
     lines = bs.header_lines("Disambiguation over the scene families", ["python3", "bench/family_bench.py", *argv],
                             prunesfm, args.colmap)
@@ -366,6 +416,7 @@ def markdown(args, argv, prunesfm, rows):
         worst = drops[0]
         lines += [f"Twin-free controls: GLOBAL_PRUNED minus GLOBAL, worst {worst[0]:+.1f} ({worst[1]}, {worst[2]} "
                   f"input), {sum(d < -0.5 for d, _, _ in drops)} of {len(drops)} below -0.5.", ""]
+    lines += cost_lines(args, rows)
     if args.ablations:
         lines += ablation_lines(args, rows + ablated)
     return lines
