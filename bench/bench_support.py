@@ -222,6 +222,15 @@ def run_ours_on_database(prunesfm, database, images, output, engine, log, timeou
     return run_stage("run", argv, log, timeout)
 
 
+def stage_totals(entries):
+    """Seconds per stage name of a timings.json "stages" list, in order of first appearance; a
+    stage that ran several times (the missing-correspondence check's solves) is summed."""
+    totals = {}
+    for entry in entries:
+        totals[entry["stage"]] = totals.get(entry["stage"], 0.0) + entry["seconds"]
+    return totals
+
+
 def run_model(stage, output):
     """OUTPUT/sparse/0, the model a successful `prunesfm run` writes; None when the run failed."""
     return Path(output) / "sparse" / "0" if stage["rc"] == 0 else None

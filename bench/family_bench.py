@@ -315,10 +315,7 @@ def stage_seconds(args, row):
     path = Path(args.work) / row["scene"] / row["input"] / row["engine"] / "result" / "timings.json"
     if not path.is_file():
         return {}
-    totals = {}
-    for stage in json.loads(path.read_text()).get("stages", []):
-        totals[stage["stage"]] = totals.get(stage["stage"], 0.0) + stage["seconds"]
-    return totals
+    return bs.stage_totals(json.loads(path.read_text()).get("stages", []))
 
 
 def cost_lines(args, rows):

@@ -66,12 +66,11 @@ def read_run_reports(out, row):
 def summed_stages(entries):
     """Seconds per stage name, in order of first appearance; a stage that ran n > 1 times (the
     solves of the missing-correspondence rounds) is summed and named "stage (n runs)"."""
-    seconds, runs = {}, {}
+    runs = {}
     for entry in entries:
-        seconds[entry["stage"]] = seconds.get(entry["stage"], 0.0) + entry["seconds"]
         runs[entry["stage"]] = runs.get(entry["stage"], 0) + 1
     return {(f"{name} ({runs[name]} runs)" if runs[name] > 1 else name): round(total, 2)
-            for name, total in seconds.items()}
+            for name, total in bs.stage_totals(entries).items()}
 
 
 def summarize_pruning(report):
