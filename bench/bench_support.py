@@ -337,13 +337,6 @@ def colmap_to_text(colmap, model, txt, log, timeout):
 # Synthetic scenes: their labels (ground_truth/ of `prunesfm synth`) and the oracle's edits
 # ----------------------------------------------------------------------------------------------
 
-def parse_scene(spec):
-    """LABEL or LABEL=SCENE:EXTRA_SYNTH_ARGS -> (label, scene, extra synth arguments)."""
-    label, _, rest = spec.partition("=")
-    scene, _, extra = rest.partition(":") if rest else (label, "", "")
-    return label, scene or label, shlex.split(extra)
-
-
 def view_index(name):
     """view_00012.jpg -> 12: the index of a synthetic view, as synthetic_scene.json and the labels use it."""
     return int(Path(name).stem.split("_")[-1])
