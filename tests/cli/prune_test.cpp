@@ -85,10 +85,11 @@ TEST(CliPrune, PaperPresetIsEveryAdditionOffAndFlagsStillApply) {
                 "--prune_max_enumerated_samples", "0", "--prune_hypothesis_selection", "largest_consensus",
                 "--prune_rotation_only_fallback", "false", "--prune_subgraph_loops_enabled", "false",
                 "--prune_trust_prior_edges", "0", "--prune_landmark_check_max_angle_deg", "0",
-                "--prune_audit_enabled", "false"});
+                "--prune_audit_enabled", "false", "--prune_capture_order_use", "unordered"});
   // The same pruning (the tree differs only in its timings).
   EXPECT_EQ(preset.at("removed_edges"), flags.at("removed_edges"));
   EXPECT_EQ(preset.at("tree").size(), flags.at("tree").size());
+  EXPECT_FALSE(preset.at("capture_order").at("used").get<bool>());
   const auto bytes = [](const fs::path& path) {
     std::ifstream in(path, std::ios::binary);
     return std::string(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>());

@@ -199,9 +199,11 @@ TEST(EnginePrunedScene, DuplicateSceneReportsGlobalVersusPruned) {
   EXPECT_GE(AucAt(run.pruned_eval, 10.0), 95.0);
   EXPECT_FALSE(run.pruned.pruning.removed_edges.empty());
   for (const RemovedEdge& removed : run.pruned.pruning.removed_edges) {
+    // Cut between subgraphs, or by the missing-correspondence check after the first solve.
     EXPECT_TRUE(removed.invalidation.reason == EdgeInvalidReason::kInterSubgraphInconsistent ||
                 removed.invalidation.reason == EdgeInvalidReason::kSubgraphLoopInconsistent ||
-                removed.invalidation.reason == EdgeInvalidReason::kUnverifiedSubgraphPair)
+                removed.invalidation.reason == EdgeInvalidReason::kUnverifiedSubgraphPair ||
+                removed.invalidation.reason == EdgeInvalidReason::kMissingCorrespondences)
         << EdgeInvalidReasonName(removed.invalidation.reason);
     // Every cut says what its value measures (the report puts it in words with its unit).
     EXPECT_NE(removed.invalidation.Measure(), EdgeMeasure::kOfReason);

@@ -318,5 +318,40 @@ TEST(SubgraphAlignment, PairsWithFewEdgesFollowTheirPolicy) {
             SubgraphAlignmentStatus::kNoEdges);
 }
 
+// A transform found elsewhere (the trusted forest's chained transform) judges the edges of a pair
+// that could not judge them itself: the true edges agree with the true transform, the twin edges
+// with the transform of the twin, and an edge that did not vote agrees with nothing.
+TEST(SubgraphAlignment, EdgesAreJudgedAgainstAGivenTransform) {
+  TwoSubgraphs setup;
+  const SubgraphAlignmentResult result = setup.Align();
+  const Similarity3 truth = setup.frame_k1.Compose(setup.frame_k2.Inverse());
+  const SubgraphAlignmentOptions options;
+  const std::vector<bool> agrees = EdgesAgreeingWithTransform(result, setup.k1, setup.k2, truth, options);
+  ASSERT_EQ(agrees.size(), result.edges.size());
+  const auto is_twin = [&](const InterSubgraphEdgeDecision& decision) {
+    const ViewPair edge{decision.placement.view_i, decision.placement.view_j};
+    return std::find(setup.twin_edges.begin(), setup.twin_edges.end(), edge) != setup.twin_edges.end();
+  };
+  for (size_t e = 0; e < result.edges.size(); ++e) EXPECT_EQ(agrees[e], !is_twin(result.edges[e])) << e;
+
+  // The twin's copy of k2 (structure turned 25° about z and shifted), seen through k2's frame.
+  Similarity3 twin;
+  twin.rotation = ExpSO3(DegToRad(25.0) * Eigen::Vector3d::UnitZ());
+  twin.translation = Eigen::Vector3d(0.3, 0.2, 0.0);
+  const Similarity3 twin_transform = setup.frame_k1.Compose(twin.Inverse()).Compose(setup.frame_k2.Inverse());
+  const std::vector<bool> agrees_with_twin =
+      EdgesAgreeingWithTransform(result, setup.k1, setup.k2, twin_transform, options);
+  size_t true_agreeing = 0;
+  for (size_t e = 0; e < result.edges.size(); ++e) {
+    if (!is_twin(result.edges[e]) && agrees_with_twin[e]) ++true_agreeing;
+  }
+  EXPECT_EQ(true_agreeing, 0u);
+
+  SubgraphAlignmentResult not_voting = result;
+  for (InterSubgraphEdgeDecision& decision : not_voting.edges) decision.voted = false;
+  const std::vector<bool> none = EdgesAgreeingWithTransform(not_voting, setup.k1, setup.k2, truth, options);
+  EXPECT_EQ(std::count(none.begin(), none.end(), true), 0);
+}
+
 }  // namespace
 }  // namespace sfm_pruning

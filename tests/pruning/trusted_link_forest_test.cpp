@@ -15,11 +15,13 @@ using testing::LoopScene;
 // A pair with the exact transform of `scene`, followed by `error` in k1's frame.
 SubgraphPairLink Pair(const LoopScene& scene, int k1, int k2, double trust, const Similarity3& error = {}) {
   const SubgraphLink link = scene.Link(k1, k2, 10, error, trust);
-  return {k1, k2, true, link.k2_to_k1, trust, 10, -1.0, 10};
+  return {k1, k2, true, link.k2_to_k1, trust, 10, -1.0, 10, false};
 }
 
 // A pair whose RANSAC gave no transform.
-SubgraphPairLink PairWithoutTransform(int k1, int k2, double trust) { return {k1, k2, false, {}, trust, 3, -1.0, 3}; }
+SubgraphPairLink PairWithoutTransform(int k1, int k2, double trust) {
+  return {k1, k2, false, {}, trust, 3, -1.0, 3, false};
+}
 
 // A street of eight subgraphs, 4 m apart along x, whose facades repeat every 16 m: the twin pairs
 // see subgraph k2 where k2 - 4 is (their transforms are shifted by one period in k1's frame), and
@@ -112,6 +114,62 @@ TEST(TrustedLinkForest, PairsWithoutTransformBridgeButNeverVerify) {
             LinkDecision::kRedundantUnverified);
   missing[5].relative_coverage = 0.9;
   EXPECT_EQ(SelectLinksByTrustedForest(missing, scene.subgraphs, lenient).decisions[5], LinkDecision::kKeptUnverified);
+}
+
+// A redundant pair without a transform of its own is judged by its edges against the transform
+// chained along the forest path, when that path has transforms all along; the check receives the
+// path's transform k2 -> k1.
+TEST(TrustedLinkForest, PairsWithoutTransformAreCheckedAgainstTheChainedForestTransform) {
+  const LoopScene scene(5);
+  const std::vector<SubgraphPairLink> pairs = {
+      Pair(scene, 0, 1, 0.9), Pair(scene, 1, 2, 0.9), PairWithoutTransform(2, 3, 0.8), Pair(scene, 3, 4, 0.9),
+      PairWithoutTransform(0, 2, 0.6),  // path 0-1-2: transforms all along
+      PairWithoutTransform(1, 2, 0.6),  // path 1-2: likewise
+      PairWithoutTransform(2, 4, 0.6),  // path 2-3-4 runs through a pair without transform
+  };
+  const Similarity3 truth_0_2 = scene.Link(0, 2, 10, {}, 1.0).k2_to_k1;
+  std::vector<size_t> checked;
+  const ForestTransformCheck check = [&](size_t pair, const ChainedTransform& chained) -> std::optional<bool> {
+    const Similarity3& k2_to_k1 = chained.k2_to_k1;
+    checked.push_back(pair);
+    if (pair == 4) {
+      EXPECT_NEAR(k2_to_k1.scale, truth_0_2.scale, 1e-9);
+      EXPECT_LT((k2_to_k1.rotation - truth_0_2.rotation).norm(), 1e-9);
+      EXPECT_LT((k2_to_k1.translation - truth_0_2.translation).norm(), 1e-9);
+      return true;
+    }
+    return std::nullopt;  // nothing of pair 5 could be checked
+  };
+  const TrustedForestResult result = SelectLinksByTrustedForest(pairs, scene.subgraphs, {}, check);
+  EXPECT_EQ(checked, (std::vector<size_t>{4, 5}));
+  EXPECT_EQ(result.decisions[4], LinkDecision::kAgreesWithForest);
+  EXPECT_EQ(result.decisions[5], LinkDecision::kRedundantUnverified);  // the trust rule decides
+  EXPECT_EQ(result.decisions[6], LinkDecision::kRedundantUnverified);
+  const ForestTransformCheck contradicts = [](size_t, const ChainedTransform&) -> std::optional<bool> { return false; };
+  EXPECT_EQ(SelectLinksByTrustedForest(pairs, scene.subgraphs, {}, contradicts).decisions[4],
+            LinkDecision::kContradictsForest);
+}
+
+TEST(TrustedLinkForest, CaptureLinkedPairsRankFirst) {
+  // The twin pair 0-4 is the most trusted, as on a courtyard whose twins match most of each view;
+  // the pairs along the capture order rank first all the same, and the twin must close its cycle
+  // with them.
+  const Street street;
+  std::vector<SubgraphPairLink> pairs = {Pair(street.scene, 0, 1, 0.6), Pair(street.scene, 1, 2, 0.6),
+                                         Pair(street.scene, 2, 3, 0.6), Pair(street.scene, 3, 4, 0.6),
+                                         Pair(street.scene, 0, 4, 0.95, street.PeriodShift(0)),
+                                         PairWithoutTransform(1, 3, 0.1)};
+  TrustedForestResult result = SelectLinksByTrustedForest(pairs, street.scene.subgraphs, {});
+  EXPECT_EQ(result.decisions[4], LinkDecision::kForest);  // trust alone: the twin joins first
+  EXPECT_EQ(result.decisions[3], LinkDecision::kBreaksCycle);
+  for (size_t p = 0; p < 4; ++p) pairs[p].capture_linked = true;
+  pairs[5].capture_linked = true;
+  result = SelectLinksByTrustedForest(pairs, street.scene.subgraphs, {});
+  for (size_t p = 0; p < 4; ++p) EXPECT_EQ(result.decisions[p], LinkDecision::kForest) << p;
+  EXPECT_EQ(result.decisions[4], LinkDecision::kBreaksCycle);
+  // Being capture-linked ranks a pair, it does not vouch for it: unverifiable and far below
+  // min_unverified_trust, it is cut.
+  EXPECT_EQ(result.decisions[5], LinkDecision::kRedundantUnverified);
 }
 
 TEST(TrustedLinkForest, PairsOfFewEdgesComeAfterTheOthersWhateverTheirTrust) {

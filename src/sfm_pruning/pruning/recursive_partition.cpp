@@ -28,7 +28,7 @@ double SecondsSince(std::chrono::steady_clock::time_point start) {
 class Partitioner {
  public:
   Partitioner(const RecursivePartitionOptions& options, const ViewGraph& graph, const SfmData& views_and_intrinsics,
-              const FeaturesPerView& features, const ProgressCallback& progress)
+              const FeaturesPerView& features, const CaptureOrder& capture_order, const ProgressCallback& progress)
       : options_(options),
         graph_(graph),
         views_and_intrinsics_(views_and_intrinsics),
@@ -39,6 +39,7 @@ class Partitioner {
     if (options_.edge_weight == RecursivePartitionOptions::EdgeWeight::kDistinctiveMatches) {
       louvain_weights_ = DistinctiveMatchWeights(graph_, FeatureDistinctiveness(graph_));
     }
+    if (capture_order.Used()) WeighCaptureNeighbours(capture_order);
   }
 
   RecursivePartitionResult Run() {
@@ -77,6 +78,15 @@ class Partitioner {
   }
 
  private:
+  // The capture-order prior (capture_order.hpp): edges between capture neighbours weigh more.
+  void WeighCaptureNeighbours(const CaptureOrder& capture_order) {
+    graph_.ForEachValidEdge([&](const ViewPair& pair, const ViewGraphEdge& edge) {
+      // Without distinctiveness weights Louvain would use the graph's own: start from those.
+      const auto weight = louvain_weights_.emplace(pair, edge.weight).first;
+      if (capture_order.AreNeighbours(pair.first, pair.second)) weight->second *= capture_order.PartitionWeightFactor();
+    });
+  }
+
   // Louvain on the node's induced subgraph; appends the children to the tree and to `wave`.
   // False when Louvain returns fewer than two communities.
   bool Split(int index, std::vector<int>* wave) {
@@ -267,8 +277,8 @@ SubgraphSolution SolutionFromModel(const std::vector<IndexT>& view_ids, const Sf
 
 RecursivePartitionResult PartitionViewGraph(const RecursivePartitionOptions& options, const ViewGraph& graph,
                                             const SfmData& views_and_intrinsics, const FeaturesPerView& features,
-                                            const ProgressCallback& progress) {
-  return Renumber(Partitioner(options, graph, views_and_intrinsics, features, progress).Run());
+                                            const CaptureOrder& capture_order, const ProgressCallback& progress) {
+  return Renumber(Partitioner(options, graph, views_and_intrinsics, features, capture_order, progress).Run());
 }
 
 std::vector<EdgeOfSubgraphs> EdgesOfAcceptedSubgraphs(const ViewGraph& graph,

@@ -25,6 +25,7 @@
 #include <vector>
 
 #include "sfm_pruning/global/global_engine.hpp"
+#include "sfm_pruning/pruning/capture_order.hpp"
 #include "sfm_pruning/pruning/consistency_tests.hpp"
 #include "sfm_pruning/pruning/subgraph_solution.hpp"
 #include "sfm_pruning/sfm/features.hpp"
@@ -120,9 +121,11 @@ struct RecursivePartitionResult {
 SubgraphSolution SolutionFromModel(const std::vector<IndexT>& view_ids, const SfmData& model);
 
 // Partitions the valid part of `graph` (every node of it; the caller restricts it to one
-// component). Progress: "subgraph partition" (nodes processed, nodes known so far).
+// component). Louvain weighs the edges between capture neighbours up when `capture_order` is used
+// (capture_order.hpp). Progress: "subgraph partition" (nodes processed, nodes known so far).
 RecursivePartitionResult PartitionViewGraph(const RecursivePartitionOptions& options, const ViewGraph& graph,
                                             const SfmData& views_and_intrinsics, const FeaturesPerView& features,
+                                            const CaptureOrder& capture_order = CaptureOrder(),
                                             const ProgressCallback& progress = {});
 
 }  // namespace sfm_pruning

@@ -414,6 +414,31 @@ SubgraphAlignmentResult AlignSubgraphPair(const ViewGraph& graph, const Subgraph
   return result;
 }
 
+std::vector<bool> EdgesAgreeingWithTransform(const SubgraphAlignmentResult& alignment, const SubgraphSolution& k1,
+                                             const SubgraphSolution& k2, const Similarity3& k2_to_k1,
+                                             const Options& options) {
+  const Pose mean_k1 = SubgraphMeanPose(k1);
+  const Pose mean_k2 = SubgraphMeanPose(k2);
+  const RelativePose implied = RelativePoseBetween(mean_k1, k2_to_k1.Apply(mean_k2));
+  Hypothesis hypothesis;
+  hypothesis.beta = k2_to_k1.scale;
+  hypothesis.mean_rotation = implied.rotation;
+  hypothesis.mean_translation = implied.translation;
+  std::vector<ChainedRelativePose> chains;
+  std::vector<size_t> edge_of_chain;
+  for (size_t e = 0; e < alignment.edges.size(); ++e) {
+    const InterSubgraphEdgeDecision& decision = alignment.edges[e];
+    const auto pose_j_in_k2 = k2.poses.find(decision.placement.view_j);
+    if (!decision.voted || pose_j_in_k2 == k2.poses.end()) continue;
+    chains.push_back(ChainRelativePose(mean_k1, decision.placement.pose_j_in_k1, pose_j_in_k2->second, mean_k2));
+    edge_of_chain.push_back(e);
+  }
+  const Consensus consensus = CountConsensus(chains, hypothesis, options);
+  std::vector<bool> agrees(alignment.edges.size(), false);
+  for (size_t c = 0; c < chains.size(); ++c) agrees[edge_of_chain[c]] = consensus.inlier[c];
+  return agrees;
+}
+
 void SubgraphAlignmentOptions::Check() const {
   placement.Check();
   RequireInRange(num_ransac_iterations, 1, 1000000, "SubgraphAlignmentOptions::num_ransac_iterations");

@@ -87,6 +87,8 @@ std::pair<std::vector<int>, std::vector<size_t>> ForestPath(const ForestAdjacenc
   return {nodes, path_links};
 }
 
+size_t CycleLoopFactor(size_t length) { return std::max<size_t>(1, (length - 1) / 2); }
+
 CycleBounds WidenedCycleBounds(size_t loop_factor, const SubgraphLoopOptions& options) {
   const double factor = static_cast<double>(loop_factor);
   return {options.max_rotation_deg * factor, std::pow(options.max_scale_ratio, factor),
@@ -113,7 +115,7 @@ SubgraphCycle MeasureSubgraphCycle(const std::vector<int>& subgraphs, const std:
   cycle.scale_ratio = accumulated.scale >= 1.0 ? accumulated.scale : 1.0 / accumulated.scale;
   const double displacement = (accumulated.Apply(first.center) - first.center).norm();
   cycle.translation_fraction = reference > 0.0 ? displacement / reference : 0.0;
-  cycle.loop_factor = std::max<size_t>(1, (length - 1) / 2);
+  cycle.loop_factor = CycleLoopFactor(length);
   const CycleBounds bounds = WidenedCycleBounds(cycle.loop_factor, options);
   cycle.consistent = cycle.rotation_deg <= bounds.rotation_deg && cycle.scale_ratio <= bounds.scale_ratio &&
                      cycle.translation_fraction <= bounds.translation_fraction;

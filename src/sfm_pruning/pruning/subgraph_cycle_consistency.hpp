@@ -40,6 +40,9 @@ using ForestAdjacency = std::vector<std::vector<std::pair<int, size_t>>>;
 // the links along it.
 std::pair<std::vector<int>, std::vector<size_t>> ForestPath(const ForestAdjacency& forest, int from, int to);
 
+// The paper's loop factor of a cycle of `length` subgraphs: ⌊(length − 1) / 2⌋, at least 1.
+size_t CycleLoopFactor(size_t length);
+
 // The triangle bounds widened by a cycle's loop factor: rotation and translation fraction
 // multiplied by it, scale ratio raised to it.
 struct CycleBounds {

@@ -54,6 +54,11 @@ struct SubgraphLoopOptions {
   // subgraphs) reaches this, when measured. sequential_large@1000: twin pairs median 0.51 absolute,
   // true pairs p10 0.69 (inside: ~0.8).
   double min_unverified_coverage = 0.75;
+  // kTrustedForest: a redundant pair without a transform of its own whose forest path has a pair
+  // without one too is judged by its edges against the transform chained along the shortest path
+  // of verified pairs between its subgraphs, where one exists (trusted_link_forest.hpp), instead of
+  // by its trust alone.
+  bool verify_along_verified_paths = true;
   // kTrustedForest: pairs of fewer connecting edges enter Kruskal's order after all the others (the
   // inter-subgraph RANSAC's min_edges_for_ransac: below it a pair has no majority of its own).
   size_t min_edges_for_trust = 3;

@@ -68,6 +68,7 @@ struct PairVerdict {
   bool keep_all = false;           // a forest pair without a transform keeps every connecting edge
   InterSubgraphVerdict reason = InterSubgraphVerdict::kLoopInconsistent;  // when cut
   EdgeInvalidation invalidation;   // when cut
+  std::vector<size_t> contradicting_edges;  // voting edges removed: against the forest's transform
 };
 
 // Invalidates the edge `pair` (first < second) with `why` and records it in `removed`; false, and
@@ -90,6 +91,13 @@ bool HasUsableTransform(const SubgraphAlignmentResult& alignment) {
 // keeps all of them if it is kept at all: they are its evidence.
 bool KeepsAllIfKept(const SubgraphAlignmentResult& alignment) {
   return !HasUsableTransform(alignment) && alignment.status != SubgraphAlignmentStatus::kRotationOnly;
+}
+
+// Whether the pair's kept edges (all of them when all_edges) include one between capture neighbours.
+bool JoinsCaptureNeighbours(const SubgraphAlignmentResult& alignment, bool all_edges, const CaptureOrder& order) {
+  return std::any_of(alignment.edges.begin(), alignment.edges.end(), [&](const InterSubgraphEdgeDecision& decision) {
+    return (decision.kept || all_edges) && order.AreNeighbours(decision.placement.view_i, decision.placement.view_j);
+  });
 }
 
 // The measure that broke a cycle and its bound (SubgraphLoopOptions, widened by the loop factor):
@@ -139,21 +147,38 @@ std::vector<PairVerdict> VoteOnTriangles(const std::vector<std::pair<int, int>>&
   return verdicts;
 }
 
+// The connecting edges of a pair (s1, s2) that agree with the transform X_s1 = k2_to_k1(X_s2) chained
+// along verified pairs, judged from the subgraph that placed the other's views, with the edge
+// thresholds widened by the chain's loop factor.
+std::vector<bool> EdgesAgreeingWithChain(const SubgraphAlignmentResult& alignment, const SubgraphSolution& s1,
+                                         const SubgraphSolution& s2, bool placed_by_second,
+                                         const ChainedTransform& chained, const SubgraphAlignmentOptions& options) {
+  SubgraphAlignmentOptions widened = options;
+  widened.max_rotation_deviation_deg *= static_cast<double>(chained.loop_factor);
+  widened.max_translation_deviation_fraction *= static_cast<double>(chained.loop_factor);
+  return placed_by_second ? EdgesAgreeingWithTransform(alignment, s2, s1, chained.k2_to_k1.Inverse(), widened)
+                          : EdgesAgreeingWithTransform(alignment, s1, s2, chained.k2_to_k1, widened);
+}
+
 // Method::kTrustedForest over every connected pair (trusted_link_forest.hpp).
 std::vector<PairVerdict> JudgeAgainstTrustedForest(const std::vector<std::pair<int, int>>& pairs,
                                                    const std::vector<SubgraphAlignmentResult>& alignments,
                                                    const std::vector<double>& trust, const std::vector<double>& coverage,
+                                                   const std::vector<char>& capture_linked,
                                                    const std::vector<SubgraphFrame>& frames,
-                                                   const SubgraphLoopOptions& options, ViewGraphPruningReport* out) {
+                                                   const SubgraphLoopOptions& options,
+                                                   const ForestTransformCheck& check_against_forest,
+                                                   const std::vector<std::vector<bool>>& agreeing,
+                                                   ViewGraphPruningReport* out) {
   std::vector<SubgraphPairLink> links(pairs.size());
   for (size_t p = 0; p < pairs.size(); ++p) {
     const SubgraphAlignmentResult& alignment = alignments[p];
     const bool has_transform = HasUsableTransform(alignment);
     links[p] = {pairs[p].first, pairs[p].second, has_transform, alignment.k2_to_k1, trust[p],
                 has_transform ? alignment.consensus_size : alignment.edges.size(), coverage[p],
-                alignment.edges.size()};
+                alignment.edges.size(), capture_linked[p] != 0};
   }
-  const TrustedForestResult forest = SelectLinksByTrustedForest(links, frames, options);
+  const TrustedForestResult forest = SelectLinksByTrustedForest(links, frames, options, check_against_forest);
   out->cycles = forest.cycles;
   std::vector<PairVerdict> verdicts(pairs.size());
   for (size_t p = 0; p < pairs.size(); ++p) {
@@ -175,6 +200,17 @@ std::vector<PairVerdict> JudgeAgainstTrustedForest(const std::vector<std::pair<i
         report.rejected_by_cycle = forest.cycle_of[p];
         break;
       }
+      case LinkDecision::kAgreesWithForest:
+        for (size_t e = 0; e < alignments[p].edges.size(); ++e) {
+          if (alignments[p].edges[e].voted && !agreeing[p][e]) verdicts[p].contradicting_edges.push_back(e);
+        }
+        break;
+      case LinkDecision::kContradictsForest:
+        // value: the pair's voting edges that agree with the chained transform (none), threshold 1.
+        verdicts[p].cut = true;
+        verdicts[p].invalidation = {EdgeInvalidReason::kSubgraphLoopInconsistent, 0.0, 1.0,
+                                    EdgeMeasure::kVotingEdges};
+        break;
       case LinkDecision::kRedundantUnverified:
         verdicts[p].cut = true;
         verdicts[p].reason = InterSubgraphVerdict::kUnverified;
@@ -206,6 +242,7 @@ void CheckMatchesOfAlignedPairs(const LandmarkMatchCheckOptions& options, const 
 }  // namespace
 
 void ApplyPaperMethod(ViewGraphPruningOptions* options) {
+  options->capture_order.use = CaptureOrderOptions::Use::kUnordered;
   options->partition.edge_weight = RecursivePartitionOptions::EdgeWeight::kInliers;
   options->partition.bisect_unsplittable = false;
   options->partition.consistency.max_baseline_ratio_factor = 0.0;
@@ -234,7 +271,11 @@ void PruneViewGraph(const ViewGraphPruningOptions& options, ViewGraph* graph, co
   auto start = std::chrono::steady_clock::now();
   const NodeGroup component = LargestComponent(*graph);
   const ViewGraph component_graph = graph->InducedSubgraph(std::set<IndexT>(component.begin(), component.end()));
-  out.partition = PartitionViewGraph(options.partition, component_graph, views_and_intrinsics, features, progress);
+  const CaptureOrder capture_order(options.capture_order, component_graph);
+  out.capture_order = capture_order.Evidence();
+  out.capture_order_used = capture_order.Used();
+  out.partition =
+      PartitionViewGraph(options.partition, component_graph, views_and_intrinsics, features, capture_order, progress);
   out.timings.push_back({"subgraph partition", SecondsSince(start)});
 
   // 2. Alignment of every connected pair of subgraphs (decisions only, the graph is unchanged).
@@ -244,6 +285,7 @@ void PruneViewGraph(const ViewGraphPruningOptions& options, ViewGraph* graph, co
   const PairTrust pair_trust(options.link_trust, component_graph, accepted, views_and_intrinsics,
                              options.alignment.placement, options.trust_prior_edges);
   std::vector<SubgraphAlignmentResult> alignments(pairs.size());
+  std::vector<char> placed_by_second(pairs.size(), 0);
   ParallelFor(
       pairs.size(), options.num_threads,
       [&](size_t p) {
@@ -253,6 +295,7 @@ void PruneViewGraph(const ViewGraphPruningOptions& options, ViewGraph* graph, co
         // The subgraph with more points places the other's views: a tiny subgraph of two views may
         // have none, and then no edge of the pair could vote.
         const bool second_places = s2.landmarks.size() > s1.landmarks.size();
+        placed_by_second[p] = second_places ? 1 : 0;
         alignments[p] = AlignSubgraphPair(*graph, second_places ? s2 : s1, second_places ? s1 : s2,
                                           views_and_intrinsics, features, PairAlignmentOptions(options, num_edges));
         if (second_places) ExpressFromTheFirstSubgraph(&alignments[p]);
@@ -264,17 +307,31 @@ void PruneViewGraph(const ViewGraphPruningOptions& options, ViewGraph* graph, co
   out.reference_coverage = pair_trust.ReferenceCoverage();
   std::vector<double> trust(pairs.size());
   std::vector<double> coverage(pairs.size());
+  std::vector<char> capture_linked(pairs.size(), 0);
   for (size_t p = 0; p < pairs.size(); ++p) {
     const bool all_edges = KeepsAllIfKept(alignments[p]);
     trust[p] = pair_trust.Of(alignments[p], all_edges);
     coverage[p] = pair_trust.RelativeCoverageOf(alignments[p], all_edges);
+    capture_linked[p] = JoinsCaptureNeighbours(alignments[p], all_edges, capture_order);
   }
   std::vector<SubgraphFrame> frames;
   for (const AcceptedSubgraph& subgraph : accepted) frames.push_back(FrameOfSubgraph(subgraph.solution));
   out.pairs.resize(pairs.size());
   std::vector<PairVerdict> verdicts(pairs.size());
   if (options.loops.enabled && options.loops.method == SubgraphLoopOptions::Method::kTrustedForest) {
-    verdicts = JudgeAgainstTrustedForest(pairs, alignments, trust, coverage, frames, options.loops, &out);
+    std::vector<std::vector<bool>> agreeing(pairs.size());
+    const ForestTransformCheck check = [&](size_t p, const ChainedTransform& chained) -> std::optional<bool> {
+      const SubgraphSolution& s1 = accepted[static_cast<size_t>(pairs[p].first)].solution;
+      const SubgraphSolution& s2 = accepted[static_cast<size_t>(pairs[p].second)].solution;
+      agreeing[p] = EdgesAgreeingWithChain(alignments[p], s1, s2, placed_by_second[p] != 0, chained, options.alignment);
+      const std::vector<InterSubgraphEdgeDecision>& edges = alignments[p].edges;
+      if (std::none_of(edges.begin(), edges.end(), [](const InterSubgraphEdgeDecision& e) { return e.voted; })) {
+        return std::nullopt;
+      }
+      return std::find(agreeing[p].begin(), agreeing[p].end(), true) != agreeing[p].end();
+    };
+    verdicts = JudgeAgainstTrustedForest(pairs, alignments, trust, coverage, capture_linked, frames, options.loops,
+                                         check, agreeing, &out);
   } else {
     verdicts = VoteOnTriangles(pairs, alignments, trust, frames, options.loops, &out);
   }
@@ -284,6 +341,10 @@ void PruneViewGraph(const ViewGraphPruningOptions& options, ViewGraph* graph, co
     const auto [k1, k2] = pairs[p];
     SubgraphAlignmentResult& alignment = alignments[p];
     const PairVerdict& verdict = verdicts[p];
+    for (size_t e : verdict.contradicting_edges) {
+      alignment.edges[e].kept = false;
+      alignment.edges[e].verdict = InterSubgraphVerdict::kLoopInconsistent;
+    }
     for (InterSubgraphEdgeDecision& decision : alignment.edges) {
       if (verdict.keep_all) decision.kept = true;
       if (verdict.cut) {
@@ -305,6 +366,7 @@ void PruneViewGraph(const ViewGraphPruningOptions& options, ViewGraph* graph, co
     pair_report.has_frame_transform = alignment.has_frame_transform;
     pair_report.k2_to_k1 = alignment.k2_to_k1;
     pair_report.trust = trust[p];
+    pair_report.capture_linked = capture_linked[p] != 0;
     pair_report.coverage = coverage[p];
     for (const InterSubgraphEdgeDecision& decision : alignment.edges) {
       if (decision.kept) continue;
@@ -526,6 +588,7 @@ void RunPrunedGlobalEngine(const PrunedGlobalEngineOptions& options, const ViewG
 }
 
 void ViewGraphPruningOptions::Check() const {
+  capture_order.Check();
   partition.Check();
   alignment.Check();
   // 0: no cap; otherwise at least the minimal sample of two edges.

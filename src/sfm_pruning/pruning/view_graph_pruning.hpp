@@ -37,6 +37,7 @@
 #include "sfm_pruning/pruning/model_edge_audit.hpp"
 #include "sfm_pruning/pruning/pair_trust.hpp"
 #include "sfm_pruning/pruning/recursive_partition.hpp"
+#include "sfm_pruning/pruning/capture_order.hpp"
 #include "sfm_pruning/pruning/subgraph_alignment.hpp"
 #include "sfm_pruning/pruning/subgraph_loop_consistency.hpp"
 #include "sfm_pruning/pruning/trusted_link_forest.hpp"
@@ -44,6 +45,9 @@
 namespace sfm_pruning {
 
 struct ViewGraphPruningOptions {
+  // The capture-order prior (capture_order.hpp): the partition and the loop check of subgraph
+  // pairs favour the edges between views taken one after the other, when the order is informative.
+  CaptureOrderOptions capture_order;
   RecursivePartitionOptions partition;
   SubgraphAlignmentOptions alignment;
   // Cap on the RANSAC sample of a pair (0 = no cap, the paper's plain fraction). The paper's
@@ -113,6 +117,8 @@ struct SubgraphPairReport {
   double coverage = -1.0;
   bool judged_by_forest = false;
   LinkDecision forest_decision = LinkDecision::kForest;
+  // Its kept edges join capture neighbours (CaptureOrder; always false when the order is not used).
+  bool capture_linked = false;
 };
 
 struct RemovedEdge {
@@ -124,6 +130,9 @@ struct RemovedEdge {
 };
 
 struct ViewGraphPruningReport {
+  // What the view graph says about the id order, and whether the pruning used it.
+  CaptureOrderEvidence capture_order;
+  bool capture_order_used = false;
   RecursivePartitionResult partition;
   std::vector<SubgraphPairReport> pairs;  // connected pairs only, (k1, k2) order
   std::vector<RemovedEdge> removed_edges;  // pair order, then (i, j) order; then the rotation check's and the audit's

@@ -34,6 +34,27 @@ void AddPresetFlag(CLI::App* group, sfm_pruning::ViewGraphPruningOptions* option
       ->default_str("default");
 }
 
+// The capture-order prior (capture_order.hpp).
+void AddCaptureOrderFlags(CLI::App* group, sfm_pruning::CaptureOrderOptions* capture_order) {
+  using Use = sfm_pruning::CaptureOrderOptions::Use;
+  group->add_option("--prune_capture_order_use", capture_order->use,
+                    "Whether the image order is the capture order (photos taken along a path): auto decides "
+                    "from the view graph, sequential and unordered say so (docs/pruning.md)")
+      ->transform(CLI::CheckedTransformer(std::map<std::string, Use>{{"auto", Use::kAuto},
+                                                                     {"sequential", Use::kSequential},
+                                                                     {"unordered", Use::kUnordered}},
+                                          CLI::ignore_case))
+      ->default_str(sfm_pruning::CaptureOrderUseName(capture_order->use));
+  group->add_option("--prune_capture_order_neighbour_window_views", capture_order->neighbour_window_views,
+                    "Images at most this many places apart in the capture order are capture neighbours")
+      ->check(CLI::Range(1, 1000))
+      ->capture_default_str();
+  group->add_option("--prune_capture_order_partition_weight_factor", capture_order->partition_weight_factor,
+                    "Louvain weight of an edge between capture neighbours, as a multiple of its weight")
+      ->check(CLI::Range(1.0, 1e6))
+      ->capture_default_str();
+}
+
 // Subgraph partition.
 void AddPartitionFlags(CLI::App* group, sfm_pruning::RecursivePartitionOptions* partition) {
   group->add_option("--prune_recursive", partition->recursive,
@@ -214,6 +235,11 @@ void AddSubgraphLoopFlags(CLI::App* group, sfm_pruning::SubgraphLoopOptions* loo
                                                                             {"trusted_forest", LoopMethod::kTrustedForest}},
                                           CLI::ignore_case))
       ->default_str("trusted_forest");
+  group->add_option("--prune_subgraph_loops_verify_along_verified_paths", loops->verify_along_verified_paths,
+                    "trusted_forest: a redundant pair without a transform that its forest path cannot verify "
+                    "is judged by its edges against the transform chained along verified pairs, where such a "
+                    "path exists (false: by its trust alone)")
+      ->capture_default_str();
   group->add_option("--prune_subgraph_loops_min_unverified_trust", loops->min_unverified_trust,
                     "trusted_forest: a redundant subgraph pair that no cycle can verify is kept when its trust "
                     "reaches this (1: as distinctive as the edges inside the subgraphs)")
@@ -308,6 +334,7 @@ void AddPruningOptions(CLI::App* cmd, sfm_pruning::ViewGraphPruningOptions* opti
       "Pruning", "View-graph pruning (GLOBAL_PRUNED, prune): the paper's method with PruneSfM's additions "
                  "(docs/pruning.md)");
   AddPresetFlag(group, options);
+  AddCaptureOrderFlags(group, &options->capture_order);
   AddPartitionFlags(group, &options->partition);
   AddConsistencyTestFlags(group, &options->partition.consistency);
   AddAlignmentFlags(group, options);

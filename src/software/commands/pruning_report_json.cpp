@@ -126,7 +126,8 @@ nlohmann::json SubgraphPairJson(const sfm_pruning::SubgraphPairReport& pair) {
                           {"rejected_by_loops", pair.rejected_by_loops},
                           {"rejected_by_cycle", pair.rejected_by_cycle},
                           {"trust", pair.trust},
-                          {"coverage", pair.coverage}};
+                          {"coverage", pair.coverage},
+                          {"capture_linked", pair.capture_linked}};
   if (pair.judged_by_forest) {
     entry["forest_decision"] = LinkDecisionName(pair.forest_decision);
   }
@@ -199,6 +200,19 @@ nlohmann::json MissingCorrespondenceRoundJson(const sfm_pruning::MissingCorrespo
           {"removed", ArrayJson(round.removed, ViewPairJson)}};
 }
 
+// "capture_order": the evidence about the id order and whether the pruning used it.
+nlohmann::json CaptureOrderJson(const sfm_pruning::ViewGraphPruningReport& pruning) {
+  const sfm_pruning::CaptureOrderEvidence& evidence = pruning.capture_order;
+  return {{"used", pruning.capture_order_used},
+          {"informative", evidence.informative},
+          {"by_edges", evidence.by_edges},
+          {"by_rotations", evidence.by_rotations},
+          {"views", evidence.num_views},
+          {"consecutive_edge_share", evidence.consecutive_edge_share},
+          {"edge_density", evidence.edge_density},
+          {"consecutive_rotation_ratio", evidence.consecutive_rotation_ratio}};
+}
+
 // "phases": the time of each stage.
 nlohmann::json StageTimingJson(const sfm_pruning::StageTiming& timing) {
   return {{"stage", timing.stage}, {"seconds", timing.seconds}};
@@ -213,6 +227,7 @@ nlohmann::json PruningReportJson(const sfm_pruning::ViewGraphPruningReport& prun
           {"engine_runs", pruning.partition.num_engine_runs},
           {"phases", ArrayJson(pruning.timings, StageTimingJson)},
           {"total_seconds", pruning.total_seconds},
+          {"capture_order", CaptureOrderJson(pruning)},
           {"reference_distinctive_share", pruning.reference_distinctive_share},
           {"reference_coverage", pruning.reference_coverage},
           {"tree", TreeJson(pruning.partition)},
@@ -245,7 +260,8 @@ std::string MissingCorrespondenceSummary(const std::vector<sfm_pruning::MissingC
 std::string PruningSummary(const sfm_pruning::ViewGraphPruningReport& pruning) {
   char seconds[32];
   std::snprintf(seconds, sizeof(seconds), "%.2f", pruning.total_seconds);
-  return std::to_string(pruning.partition.accepted.size()) + " subgraphs (" +
+  return std::string(pruning.capture_order_used ? "capture order used; " : "") +
+         std::to_string(pruning.partition.accepted.size()) + " subgraphs (" +
          std::to_string(pruning.partition.nodes.size()) + " tree nodes, " +
          std::to_string(pruning.partition.num_engine_runs) + " engine runs), removed " +
          std::to_string(pruning.removed_edges.size()) + " of " + std::to_string(pruning.num_input_edges) +

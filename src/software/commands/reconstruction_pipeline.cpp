@@ -103,6 +103,7 @@ nlohmann::json TimingsJson(const EngineSettings& settings, const sfm_pruning::Vi
     json["prune_max_baseline_ratio_factor"] =
         settings.pruning.partition.consistency.max_baseline_ratio_factor;
     json["prune_trust_prior_edges"] = settings.pruning.trust_prior_edges;
+    json["prune_capture_order_use"] = sfm_pruning::CaptureOrderUseName(settings.pruning.capture_order.use);
   }
   json["seed"] = settings.seed;
   json["num_threads"] = sfm_pruning::ResolveThreadCount(settings.num_threads);
