@@ -326,31 +326,43 @@ TEST(SubgraphAlignment, EdgesAreJudgedAgainstAGivenTransform) {
   const SubgraphAlignmentResult result = setup.Align();
   const Similarity3 truth = setup.frame_k1.Compose(setup.frame_k2.Inverse());
   const SubgraphAlignmentOptions options;
-  const std::vector<bool> agrees = EdgesAgreeingWithTransform(result, setup.k1, setup.k2, truth, options);
-  ASSERT_EQ(agrees.size(), result.edges.size());
+  const std::vector<EdgeAgainstTransform> judged =
+      JudgeEdgesAgainstTransform(result, setup.k1, setup.k2, truth, options);
+  ASSERT_EQ(judged.size(), result.edges.size());
   const auto is_twin = [&](const InterSubgraphEdgeDecision& decision) {
     const ViewPair edge{decision.placement.view_i, decision.placement.view_j};
     return std::find(setup.twin_edges.begin(), setup.twin_edges.end(), edge) != setup.twin_edges.end();
   };
-  for (size_t e = 0; e < result.edges.size(); ++e) EXPECT_EQ(agrees[e], !is_twin(result.edges[e])) << e;
+  for (size_t e = 0; e < result.edges.size(); ++e) {
+    EXPECT_TRUE(judged[e].voted);
+    EXPECT_EQ(judged[e].agrees, !is_twin(result.edges[e])) << e;
+    if (is_twin(result.edges[e])) {
+      EXPECT_GT(judged[e].rotation_deviation_deg, 20.0);  // the twin turns by 25°
+    } else {
+      EXPECT_LT(judged[e].rotation_deviation_deg, 1e-3);
+      EXPECT_LT(judged[e].translation_deviation_fraction, 1e-3);
+    }
+  }
 
   // The twin's copy of k2 (structure turned 25° about z and shifted), seen through k2's frame.
   Similarity3 twin;
   twin.rotation = ExpSO3(DegToRad(25.0) * Eigen::Vector3d::UnitZ());
   twin.translation = Eigen::Vector3d(0.3, 0.2, 0.0);
   const Similarity3 twin_transform = setup.frame_k1.Compose(twin.Inverse()).Compose(setup.frame_k2.Inverse());
-  const std::vector<bool> agrees_with_twin =
-      EdgesAgreeingWithTransform(result, setup.k1, setup.k2, twin_transform, options);
+  const std::vector<EdgeAgainstTransform> against_twin =
+      JudgeEdgesAgainstTransform(result, setup.k1, setup.k2, twin_transform, options);
   size_t true_agreeing = 0;
   for (size_t e = 0; e < result.edges.size(); ++e) {
-    if (!is_twin(result.edges[e]) && agrees_with_twin[e]) ++true_agreeing;
+    if (!is_twin(result.edges[e]) && against_twin[e].agrees) ++true_agreeing;
   }
   EXPECT_EQ(true_agreeing, 0u);
 
   SubgraphAlignmentResult not_voting = result;
   for (InterSubgraphEdgeDecision& decision : not_voting.edges) decision.voted = false;
-  const std::vector<bool> none = EdgesAgreeingWithTransform(not_voting, setup.k1, setup.k2, truth, options);
-  EXPECT_EQ(std::count(none.begin(), none.end(), true), 0);
+  for (const EdgeAgainstTransform& edge : JudgeEdgesAgainstTransform(not_voting, setup.k1, setup.k2, truth, options)) {
+    EXPECT_FALSE(edge.voted);
+    EXPECT_FALSE(edge.agrees);
+  }
 }
 
 }  // namespace

@@ -414,9 +414,9 @@ SubgraphAlignmentResult AlignSubgraphPair(const ViewGraph& graph, const Subgraph
   return result;
 }
 
-std::vector<bool> EdgesAgreeingWithTransform(const SubgraphAlignmentResult& alignment, const SubgraphSolution& k1,
-                                             const SubgraphSolution& k2, const Similarity3& k2_to_k1,
-                                             const Options& options) {
+std::vector<EdgeAgainstTransform> JudgeEdgesAgainstTransform(const SubgraphAlignmentResult& alignment,
+                                                             const SubgraphSolution& k1, const SubgraphSolution& k2,
+                                                             const Similarity3& k2_to_k1, const Options& options) {
   const Pose mean_k1 = SubgraphMeanPose(k1);
   const Pose mean_k2 = SubgraphMeanPose(k2);
   const RelativePose implied = RelativePoseBetween(mean_k1, k2_to_k1.Apply(mean_k2));
@@ -424,19 +424,22 @@ std::vector<bool> EdgesAgreeingWithTransform(const SubgraphAlignmentResult& alig
   hypothesis.beta = k2_to_k1.scale;
   hypothesis.mean_rotation = implied.rotation;
   hypothesis.mean_translation = implied.translation;
-  std::vector<ChainedRelativePose> chains;
-  std::vector<size_t> edge_of_chain;
+  const double translation_scale = std::max(hypothesis.mean_translation.norm(), 1e-300);
+  std::vector<EdgeAgainstTransform> judged(alignment.edges.size());
   for (size_t e = 0; e < alignment.edges.size(); ++e) {
     const InterSubgraphEdgeDecision& decision = alignment.edges[e];
     const auto pose_j_in_k2 = k2.poses.find(decision.placement.view_j);
     if (!decision.voted || pose_j_in_k2 == k2.poses.end()) continue;
-    chains.push_back(ChainRelativePose(mean_k1, decision.placement.pose_j_in_k1, pose_j_in_k2->second, mean_k2));
-    edge_of_chain.push_back(e);
+    const Deviation deviation = MeasureDeviation(
+        ChainRelativePose(mean_k1, decision.placement.pose_j_in_k1, pose_j_in_k2->second, mean_k2), hypothesis);
+    EdgeAgainstTransform& edge = judged[e];
+    edge.voted = true;
+    edge.rotation_deviation_deg = deviation.rotation_deg;
+    edge.translation_deviation_fraction = deviation.translation / translation_scale;
+    edge.agrees = edge.rotation_deviation_deg <= options.max_rotation_deviation_deg &&
+                  edge.translation_deviation_fraction <= options.max_translation_deviation_fraction;
   }
-  const Consensus consensus = CountConsensus(chains, hypothesis, options);
-  std::vector<bool> agrees(alignment.edges.size(), false);
-  for (size_t c = 0; c < chains.size(); ++c) agrees[edge_of_chain[c]] = consensus.inlier[c];
-  return agrees;
+  return judged;
 }
 
 void SubgraphAlignmentOptions::Check() const {

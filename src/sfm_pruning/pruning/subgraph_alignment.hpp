@@ -194,12 +194,21 @@ SubgraphAlignmentResult AlignSubgraphPair(const ViewGraph& graph, const Subgraph
                                           const FeaturesPerView& features,
                                           const SubgraphAlignmentOptions& options = {});
 
-// Which connecting edges of `alignment` (computed by AlignSubgraphPair(graph, k1, k2, ...)) agree
-// with a frame transform found elsewhere, X_k1 = k2_to_k1(X_k2), by the RANSAC's consensus test:
-// the transform stands in for a hypothesis (its scale as β, the pose of k2's mean camera it
-// implies in k1 as the mean chained pose). One entry per edge; false for an edge that did not vote.
-std::vector<bool> EdgesAgreeingWithTransform(const SubgraphAlignmentResult& alignment, const SubgraphSolution& k1,
-                                             const SubgraphSolution& k2, const Similarity3& k2_to_k1,
-                                             const SubgraphAlignmentOptions& options);
+// A connecting edge judged against a frame transform found elsewhere (JudgeEdgesAgainstTransform).
+struct EdgeAgainstTransform {
+  bool voted = false;   // placed in k1 and posed in k2: judged
+  bool agrees = false;  // within max_rotation_deviation_deg and max_translation_deviation_fraction
+  double rotation_deviation_deg = 0.0;           // E_r
+  double translation_deviation_fraction = 0.0;   // E_t over |t̄|
+};
+
+// The connecting edges of `alignment` (computed by AlignSubgraphPair(graph, k1, k2, ...)) judged
+// against a frame transform found elsewhere, X_k1 = k2_to_k1(X_k2), by the RANSAC's consensus test:
+// the transform stands in for a hypothesis (its scale as β, the pose of k2's mean camera it implies
+// in k1 as the mean chained pose). One entry per edge.
+std::vector<EdgeAgainstTransform> JudgeEdgesAgainstTransform(const SubgraphAlignmentResult& alignment,
+                                                             const SubgraphSolution& k1, const SubgraphSolution& k2,
+                                                             const Similarity3& k2_to_k1,
+                                                             const SubgraphAlignmentOptions& options);
 
 }  // namespace sfm_pruning

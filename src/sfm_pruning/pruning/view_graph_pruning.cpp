@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <chrono>
+#include <limits>
 #include <map>
 #include <set>
 #include <utility>
@@ -68,7 +69,9 @@ struct PairVerdict {
   bool keep_all = false;           // a forest pair without a transform keeps every connecting edge
   InterSubgraphVerdict reason = InterSubgraphVerdict::kLoopInconsistent;  // when cut
   EdgeInvalidation invalidation;   // when cut
-  std::vector<size_t> contradicting_edges;  // voting edges removed: against the forest's transform
+  // Voting edges removed by the verification along verified paths: why each disagrees (the
+  // deviation that failed against the chained transform, and its widened bound); reason kNone: kept.
+  std::vector<EdgeInvalidation> disagreements;
 };
 
 // Invalidates the edge `pair` (first < second) with `why` and records it in `removed`; false, and
@@ -147,17 +150,32 @@ std::vector<PairVerdict> VoteOnTriangles(const std::vector<std::pair<int, int>>&
   return verdicts;
 }
 
-// The connecting edges of a pair (s1, s2) that agree with the transform X_s1 = k2_to_k1(X_s2) chained
-// along verified pairs, judged from the subgraph that placed the other's views, with the edge
-// thresholds widened by the chain's loop factor.
-std::vector<bool> EdgesAgreeingWithChain(const SubgraphAlignmentResult& alignment, const SubgraphSolution& s1,
-                                         const SubgraphSolution& s2, bool placed_by_second,
-                                         const ChainedTransform& chained, const SubgraphAlignmentOptions& options) {
+// The connecting edges of a pair (s1, s2) judged against the transform X_s1 = k2_to_k1(X_s2) chained
+// along verified pairs (ForestTransformCheck), from the subgraph that placed the other's views, with
+// the edge thresholds widened by the chain's loop factor: per edge, why it disagrees (the deviation
+// that failed and its widened bound); reason kNone for an edge that agrees or did not vote.
+std::vector<EdgeInvalidation> DisagreementsWithChain(const SubgraphAlignmentResult& alignment,
+                                                     const SubgraphSolution& s1, const SubgraphSolution& s2,
+                                                     bool placed_by_second, const ChainedTransform& chained,
+                                                     const SubgraphAlignmentOptions& options) {
   SubgraphAlignmentOptions widened = options;
   widened.max_rotation_deviation_deg *= static_cast<double>(chained.loop_factor);
   widened.max_translation_deviation_fraction *= static_cast<double>(chained.loop_factor);
-  return placed_by_second ? EdgesAgreeingWithTransform(alignment, s2, s1, chained.k2_to_k1.Inverse(), widened)
-                          : EdgesAgreeingWithTransform(alignment, s1, s2, chained.k2_to_k1, widened);
+  const std::vector<EdgeAgainstTransform> judged =
+      placed_by_second ? JudgeEdgesAgainstTransform(alignment, s2, s1, chained.k2_to_k1.Inverse(), widened)
+                       : JudgeEdgesAgainstTransform(alignment, s1, s2, chained.k2_to_k1, widened);
+  std::vector<EdgeInvalidation> why(judged.size());
+  const EdgeInvalidReason reason = EdgeInvalidReason::kSubgraphLoopInconsistent;
+  for (size_t e = 0; e < judged.size(); ++e) {
+    const EdgeAgainstTransform& edge = judged[e];
+    if (!edge.voted || edge.agrees) continue;
+    why[e] = edge.rotation_deviation_deg > widened.max_rotation_deviation_deg
+                 ? EdgeInvalidation{reason, edge.rotation_deviation_deg, widened.max_rotation_deviation_deg,
+                                    EdgeMeasure::kDegrees}
+                 : EdgeInvalidation{reason, edge.translation_deviation_fraction,
+                                    widened.max_translation_deviation_fraction, EdgeMeasure::kTranslationFraction};
+  }
+  return why;
 }
 
 // Method::kTrustedForest over every connected pair (trusted_link_forest.hpp).
@@ -168,7 +186,7 @@ std::vector<PairVerdict> JudgeAgainstTrustedForest(const std::vector<std::pair<i
                                                    const std::vector<SubgraphFrame>& frames,
                                                    const SubgraphLoopOptions& options,
                                                    const ForestTransformCheck& check_against_forest,
-                                                   const std::vector<std::vector<bool>>& agreeing,
+                                                   const std::vector<std::vector<EdgeInvalidation>>& disagreements,
                                                    ViewGraphPruningReport* out) {
   std::vector<SubgraphPairLink> links(pairs.size());
   for (size_t p = 0; p < pairs.size(); ++p) {
@@ -201,16 +219,19 @@ std::vector<PairVerdict> JudgeAgainstTrustedForest(const std::vector<std::pair<i
         break;
       }
       case LinkDecision::kAgreesWithForest:
-        for (size_t e = 0; e < alignments[p].edges.size(); ++e) {
-          if (alignments[p].edges[e].voted && !agreeing[p][e]) verdicts[p].contradicting_edges.push_back(e);
+        verdicts[p].disagreements = disagreements[p];
+        break;
+      case LinkDecision::kContradictsForest: {
+        // Every edge of the pair is recorded with the disagreement of the edge that came closest.
+        verdicts[p].cut = true;
+        double closest = std::numeric_limits<double>::infinity();
+        for (const EdgeInvalidation& why : disagreements[p]) {
+          if (why.reason == EdgeInvalidReason::kNone || why.value / why.threshold >= closest) continue;
+          closest = why.value / why.threshold;
+          verdicts[p].invalidation = why;
         }
         break;
-      case LinkDecision::kContradictsForest:
-        // value: the pair's voting edges that agree with the chained transform (none), threshold 1.
-        verdicts[p].cut = true;
-        verdicts[p].invalidation = {EdgeInvalidReason::kSubgraphLoopInconsistent, 0.0, 1.0,
-                                    EdgeMeasure::kVotingEdges};
-        break;
+      }
       case LinkDecision::kRedundantUnverified:
         verdicts[p].cut = true;
         verdicts[p].reason = InterSubgraphVerdict::kUnverified;
@@ -319,19 +340,24 @@ void PruneViewGraph(const ViewGraphPruningOptions& options, ViewGraph* graph, co
   out.pairs.resize(pairs.size());
   std::vector<PairVerdict> verdicts(pairs.size());
   if (options.loops.enabled && options.loops.method == SubgraphLoopOptions::Method::kTrustedForest) {
-    std::vector<std::vector<bool>> agreeing(pairs.size());
+    std::vector<std::vector<EdgeInvalidation>> disagreements(pairs.size());
     const ForestTransformCheck check = [&](size_t p, const ChainedTransform& chained) -> std::optional<bool> {
       const SubgraphSolution& s1 = accepted[static_cast<size_t>(pairs[p].first)].solution;
       const SubgraphSolution& s2 = accepted[static_cast<size_t>(pairs[p].second)].solution;
-      agreeing[p] = EdgesAgreeingWithChain(alignments[p], s1, s2, placed_by_second[p] != 0, chained, options.alignment);
-      const std::vector<InterSubgraphEdgeDecision>& edges = alignments[p].edges;
-      if (std::none_of(edges.begin(), edges.end(), [](const InterSubgraphEdgeDecision& e) { return e.voted; })) {
-        return std::nullopt;
+      disagreements[p] =
+          DisagreementsWithChain(alignments[p], s1, s2, placed_by_second[p] != 0, chained, options.alignment);
+      bool any_voted = false;
+      bool any_agrees = false;
+      for (size_t e = 0; e < alignments[p].edges.size(); ++e) {
+        if (!alignments[p].edges[e].voted) continue;
+        any_voted = true;
+        any_agrees = any_agrees || disagreements[p][e].reason == EdgeInvalidReason::kNone;
       }
-      return std::find(agreeing[p].begin(), agreeing[p].end(), true) != agreeing[p].end();
+      if (!any_voted) return std::nullopt;
+      return any_agrees;
     };
     verdicts = JudgeAgainstTrustedForest(pairs, alignments, trust, coverage, capture_linked, frames, options.loops,
-                                         check, agreeing, &out);
+                                         check, disagreements, &out);
   } else {
     verdicts = VoteOnTriangles(pairs, alignments, trust, frames, options.loops, &out);
   }
@@ -341,7 +367,8 @@ void PruneViewGraph(const ViewGraphPruningOptions& options, ViewGraph* graph, co
     const auto [k1, k2] = pairs[p];
     SubgraphAlignmentResult& alignment = alignments[p];
     const PairVerdict& verdict = verdicts[p];
-    for (size_t e : verdict.contradicting_edges) {
+    for (size_t e = 0; e < verdict.disagreements.size(); ++e) {
+      if (verdict.disagreements[e].reason == EdgeInvalidReason::kNone) continue;
       alignment.edges[e].kept = false;
       alignment.edges[e].verdict = InterSubgraphVerdict::kLoopInconsistent;
     }
@@ -368,11 +395,15 @@ void PruneViewGraph(const ViewGraphPruningOptions& options, ViewGraph* graph, co
     pair_report.trust = trust[p];
     pair_report.capture_linked = capture_linked[p] != 0;
     pair_report.coverage = coverage[p];
-    for (const InterSubgraphEdgeDecision& decision : alignment.edges) {
+    for (size_t e = 0; e < alignment.edges.size(); ++e) {
+      const InterSubgraphEdgeDecision& decision = alignment.edges[e];
       if (decision.kept) continue;
-      const EdgeInvalidation why =
-          verdict.cut && decision.verdict == verdict.reason ? verdict.invalidation
-                                                            : InterSubgraphInvalidation(decision, options.alignment);
+      EdgeInvalidation why = verdict.cut && decision.verdict == verdict.reason
+                                 ? verdict.invalidation
+                                 : InterSubgraphInvalidation(decision, options.alignment);
+      if (e < verdict.disagreements.size() && verdict.disagreements[e].reason != EdgeInvalidReason::kNone) {
+        why = verdict.disagreements[e];
+      }
       if (RemoveEdge(MakeViewPair(decision.placement.view_i, decision.placement.view_j), k1, k2, decision.verdict,
                      why, graph, &out.removed_edges)) {
         ++pair_report.num_removed_edges;
