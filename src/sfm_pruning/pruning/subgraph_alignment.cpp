@@ -200,25 +200,22 @@ bool ApplyRotationOnlyConsensus(const std::vector<ChainedRelativePose>& chains,
   return true;
 }
 
-// Runs RANSAC over the voting edges and writes the verdicts of the voters into `result`.
-// kLargestConsensus keeps the first run's winner (the paper). kMatchCoverage runs RANSAC again on
-// the edges outside every consensus found so far (up to max_hypotheses candidates) and keeps the
-// largest candidate that its coverage score does not rule out (the largest of all if it rules out
-// every one).
-void RunRansac(const std::vector<ChainedRelativePose>& chains, const std::vector<EdgeCoverage>& coverage,
-               const std::vector<size_t>& voter_edge_index, const Options& options, SubgraphAlignmentResult* result) {
-  const size_t n = chains.size();
+// The paper's step: one RANSAC run over every voter. With kMatchCoverage (an addition) the RANSAC
+// runs again on the voters that no candidate so far explains, for up to max_hypotheses candidates,
+// each later one backed by a consensus of its own (not just the leftovers).
+std::vector<Candidate> FindCandidates(const std::vector<ChainedRelativePose>& chains, const Options& options,
+                                      SubgraphAlignmentResult* result) {
   std::mt19937_64 rng(options.seed);
-  std::vector<size_t> pool(n);
+  std::vector<size_t> pool(chains.size());
   std::iota(pool.begin(), pool.end(), size_t{0});
-  std::vector<Candidate> candidates;
+  const size_t min_consensus = std::max<size_t>(options.min_edges_for_ransac, 2);
   const size_t max_candidates =
       options.hypothesis_selection == Options::HypothesisSelection::kMatchCoverage ? options.max_hypotheses : 1;
+  std::vector<Candidate> candidates;
   while (candidates.size() < std::max<size_t>(max_candidates, 1)) {
     std::optional<Candidate> candidate = RansacOverPool(chains, pool, options, &rng, result);
     if (!candidate) break;
-    // A later candidate must be backed by a consensus of its own (not just the leftovers).
-    if (!candidates.empty() && candidate->consensus.count < std::max<size_t>(options.min_edges_for_ransac, 2)) break;
+    if (!candidates.empty() && candidate->consensus.count < min_consensus) break;
     candidates.push_back(std::move(*candidate));
     std::vector<size_t> rest;
     for (size_t k : pool) {
@@ -226,12 +223,88 @@ void RunRansac(const std::vector<ChainedRelativePose>& chains, const std::vector
       for (const Candidate& c : candidates) explained = explained || c.consensus.inlier[k];
       if (!explained) rest.push_back(k);
     }
-    if (rest.size() < std::max<size_t>(options.min_edges_for_ransac, 2)) break;
+    if (rest.size() < min_consensus) break;
     pool = std::move(rest);
   }
-  const bool supported = std::any_of(candidates.begin(), candidates.end(),
-                                     [](const Candidate& c) { return c.consensus.count > 0; });
-  if (!supported && options.rotation_only_fallback &&
+  return candidates;
+}
+
+bool AnyCandidateSupported(const std::vector<Candidate>& candidates) {
+  return std::any_of(candidates.begin(), candidates.end(), [](const Candidate& c) { return c.consensus.count > 0; });
+}
+
+// The selection among the candidates; records each in result->hypotheses. The paper's rule is the
+// largest consensus. The match-coverage policy first rules out the candidates whose edges miss
+// more landmarks than the break-even (or, when that rules out every one, as on real images, those
+// far below the best: RelativelyRuledOut), and a candidate that no edge agrees with (its own sample
+// failed the thresholds) expects nothing, so its coverage cannot rule it out: it never wins over one
+// that some edges support (real street, seed 9: an empty candidate beat one of 3 edges and the pair
+// lost its transform). With a single candidate the rules change nothing.
+size_t SelectCandidate(const std::vector<Candidate>& candidates, const std::vector<EdgeCoverage>& coverage,
+                       const Options& options, SubgraphAlignmentResult* result) {
+  for (const Candidate& candidate : candidates) {
+    AlignmentHypothesis summary;
+    summary.consensus_size = candidate.consensus.count;
+    summary.beta = candidate.hypothesis.beta;
+    ScoreCoverage(candidate.consensus, coverage, options, &summary);
+    summary.num_samples = candidate.num_samples;
+    summary.enumerated = candidate.enumerated;
+    result->hypotheses.push_back(summary);
+  }
+  std::vector<bool> ruled_out(candidates.size());
+  for (size_t c = 0; c < candidates.size(); ++c) ruled_out[c] = result->hypotheses[c].coverage_score < 0.0;
+  if (std::all_of(ruled_out.begin(), ruled_out.end(), [](bool out) { return out; })) {
+    ruled_out = RelativelyRuledOut(result->hypotheses, options);
+  }
+  const bool supported = AnyCandidateSupported(candidates);
+  for (size_t c = 0; c < candidates.size(); ++c) {
+    if (result->hypotheses[c].consensus_size == 0 && supported) ruled_out[c] = true;
+    result->hypotheses[c].ruled_out = ruled_out[c];
+  }
+  size_t chosen = 0;
+  for (size_t c = 1; c < candidates.size(); ++c) {
+    const bool larger = result->hypotheses[c].consensus_size > result->hypotheses[chosen].consensus_size;
+    const bool better = ruled_out[chosen] ? (!ruled_out[c] || larger) : (!ruled_out[c] && larger);
+    if (better) chosen = c;
+  }
+  result->selected_hypothesis = static_cast<int>(chosen);
+  return chosen;
+}
+
+// The verdict of every voter under the selected candidate: kept when in its consensus, else
+// removed for the deviation that failed (rotation first).
+void ApplyCandidate(const std::vector<ChainedRelativePose>& chains, const std::vector<size_t>& voter_edge_index,
+                    const Candidate& candidate, const Options& options, SubgraphAlignmentResult* result) {
+  const Hypothesis& best = candidate.hypothesis;
+  result->best_iteration = candidate.iteration;
+  result->status = SubgraphAlignmentStatus::kAligned;
+  result->beta = best.beta;
+  result->mean_rotation = best.mean_rotation;
+  result->mean_translation = best.mean_translation;
+  result->consensus_size = candidate.consensus.count;
+  const double translation_threshold = options.max_translation_deviation_fraction * best.mean_translation.norm();
+  for (size_t k = 0; k < chains.size(); ++k) {
+    InterSubgraphEdgeDecision& decision = result->edges[voter_edge_index[k]];
+    const Deviation deviation = MeasureDeviation(chains[k], best);
+    decision.rotation_deviation_deg = deviation.rotation_deg;
+    decision.translation_deviation = deviation.translation;
+    decision.translation_threshold = translation_threshold;
+    decision.kept = candidate.consensus.inlier[k];
+    decision.verdict = decision.kept ? InterSubgraphVerdict::kConsistent
+                       : deviation.rotation_deg > options.max_rotation_deviation_deg
+                           ? InterSubgraphVerdict::kRotationDeviation
+                           : InterSubgraphVerdict::kTranslationDeviation;
+  }
+}
+
+// The inter-subgraph RANSAC of a pair with enough voters: the candidates (the paper's run, plus the
+// match-coverage policy's further runs), then the policy for a pair that no candidate's edges
+// support (the rotation-only fallback, else every voter kept unjudged), else the selected
+// candidate's verdicts.
+void RunRansac(const std::vector<ChainedRelativePose>& chains, const std::vector<EdgeCoverage>& coverage,
+               const std::vector<size_t>& voter_edge_index, const Options& options, SubgraphAlignmentResult* result) {
+  const std::vector<Candidate> candidates = FindCandidates(chains, options, result);
+  if (!AnyCandidateSupported(candidates) && options.rotation_only_fallback &&
       ApplyRotationOnlyConsensus(chains, voter_edge_index, options, result)) {
     return;
   }
@@ -240,60 +313,8 @@ void RunRansac(const std::vector<ChainedRelativePose>& chains, const std::vector
     ApplyPolicyToVoters(result, InterSubgraphVerdict::kUnjudged, true);
     return;
   }
-  size_t chosen = 0;
-  for (size_t c = 0; c < candidates.size(); ++c) {
-    AlignmentHypothesis summary;
-    summary.consensus_size = candidates[c].consensus.count;
-    summary.beta = candidates[c].hypothesis.beta;
-    ScoreCoverage(candidates[c].consensus, coverage, options, &summary);
-    summary.num_samples = candidates[c].num_samples;
-    summary.enumerated = candidates[c].enumerated;
-    result->hypotheses.push_back(summary);
-  }
-  // Candidates whose edges miss more landmarks than the break-even are ruled out; the largest
-  // consensus among the others wins (the paper's rule). If all are ruled out (real images), the
-  // candidates are compared with each other instead (RelativelyRuledOut).
-  const bool consensus_found = std::any_of(candidates.begin(), candidates.end(),
-                                          [](const Candidate& c) { return c.consensus.count > 0; });
-  std::vector<bool> ruled_out(candidates.size());
-  for (size_t c = 0; c < candidates.size(); ++c) ruled_out[c] = result->hypotheses[c].coverage_score < 0.0;
-  if (std::all_of(ruled_out.begin(), ruled_out.end(), [](bool out) { return out; })) {
-    ruled_out = RelativelyRuledOut(result->hypotheses, options);
-  }
-  // A candidate no edge agrees with (its own sample failed the thresholds) expects nothing, so its
-  // coverage cannot rule it out; it must not win over one that some edges support (real street,
-  // seed 9: an empty candidate beat one of 3 edges and the pair lost its transform).
-  for (size_t c = 0; c < candidates.size(); ++c) {
-    if (result->hypotheses[c].consensus_size == 0 && consensus_found) ruled_out[c] = true;
-    result->hypotheses[c].ruled_out = ruled_out[c];
-  }
-  for (size_t c = 1; c < candidates.size(); ++c) {
-    const bool larger = result->hypotheses[c].consensus_size > result->hypotheses[chosen].consensus_size;
-    const bool better = ruled_out[chosen] ? (!ruled_out[c] || larger) : (!ruled_out[c] && larger);
-    if (better) chosen = c;
-  }
-  result->selected_hypothesis = static_cast<int>(chosen);
-  const std::optional<Hypothesis> best = candidates[chosen].hypothesis;
-  const Consensus& best_consensus = candidates[chosen].consensus;
-  result->best_iteration = candidates[chosen].iteration;
-  result->status = SubgraphAlignmentStatus::kAligned;
-  result->beta = best->beta;
-  result->mean_rotation = best->mean_rotation;
-  result->mean_translation = best->mean_translation;
-  result->consensus_size = best_consensus.count;
-  const double translation_threshold = options.max_translation_deviation_fraction * best->mean_translation.norm();
-  for (size_t k = 0; k < n; ++k) {
-    InterSubgraphEdgeDecision& decision = result->edges[voter_edge_index[k]];
-    const Deviation deviation = MeasureDeviation(chains[k], *best);
-    decision.rotation_deviation_deg = deviation.rotation_deg;
-    decision.translation_deviation = deviation.translation;
-    decision.translation_threshold = translation_threshold;
-    decision.kept = best_consensus.inlier[k];
-    decision.verdict = decision.kept ? InterSubgraphVerdict::kConsistent
-                       : deviation.rotation_deg > options.max_rotation_deviation_deg
-                           ? InterSubgraphVerdict::kRotationDeviation
-                           : InterSubgraphVerdict::kTranslationDeviation;
-  }
+  const size_t chosen = SelectCandidate(candidates, coverage, options, result);
+  ApplyCandidate(chains, voter_edge_index, candidates[chosen], options, result);
 }
 
 }  // namespace
