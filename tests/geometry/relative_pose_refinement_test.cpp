@@ -1,5 +1,6 @@
 #include "sfm_pruning/geometry/relative_pose_refinement.hpp"
 
+#include <cmath>
 #include <numeric>
 
 #include <ceres/ceres.h>
@@ -27,6 +28,27 @@ std::vector<int> AllIndices(size_t n) {
   std::vector<int> indices(n);
   std::iota(indices.begin(), indices.end(), 0);
   return indices;
+}
+
+// A two-view scene of `num_points` correspondences with `pixel_noise` px of noise, its pose refined
+// from the truth moved by `rotation_deg` and tilted by `direction_deg`.
+struct RefinedScene {
+  testing::SyntheticScene scene;
+  RelativePose truth;
+  RelativePose pose;
+  RelativePoseRefinementSummary summary;
+};
+
+RefinedScene RefineFromPerturbedTruth(int num_points, double pixel_noise, uint32_t seed, double rotation_deg,
+                                      double direction_deg) {
+  RefinedScene refined;
+  // {points, pixel noise, outlier ratio, distortion, seed}
+  refined.scene = testing::MakeSyntheticScene(2, {num_points, pixel_noise, 0.0, true, seed});
+  refined.truth = testing::TrueRelativePose(refined.scene);
+  refined.pose = Perturbed(refined.truth, rotation_deg, direction_deg);
+  refined.summary = RefineRelativePose(refined.scene.bearings[0], refined.scene.bearings[1],
+                                       AllIndices(static_cast<size_t>(num_points)), {}, &refined.pose);
+  return refined;
 }
 
 double HalfSumOfSquaredErrors(const testing::SyntheticScene& scene, const std::vector<int>& indices,
@@ -84,12 +106,7 @@ void CeresReferenceRefinement(const testing::SyntheticScene& scene, const std::v
 
 TEST(RelativePoseRefinement, NoiseFreeConvergesToTheTruth) {
   for (uint32_t seed = 1; seed <= 5; ++seed) {
-    // {points, pixel noise, outlier ratio, distortion, seed}
-    const testing::SyntheticScene scene = testing::MakeSyntheticScene(2, {100, 0.0, 0.0, true, seed});
-    const RelativePose truth = testing::TrueRelativePose(scene);
-    RelativePose pose = Perturbed(truth, 3.0, 5.0);
-    const RelativePoseRefinementSummary summary =
-        RefineRelativePose(scene.bearings[0], scene.bearings[1], AllIndices(100), {}, &pose);
+    const auto [scene, truth, pose, summary] = RefineFromPerturbedTruth(100, 0.0, seed, 3.0, 5.0);
     ASSERT_TRUE(summary.converged) << "seed " << seed;
     EXPECT_GT(summary.initial_cost, 1e-6);
     EXPECT_LT(summary.final_cost, 1e-20);
@@ -139,6 +156,42 @@ TEST(RelativePoseRefinement, TheCauchyLossResistsOutliers) {
   const double robust_error = LogSO3(truth.rotation.transpose() * robust.rotation).norm();
   EXPECT_LT(robust_error, 0.5 * plain_error);
   EXPECT_LT(RadToDeg(robust_error), 0.3);
+}
+
+TEST(RelativePoseRefinement, TheRotationCovariancePredictsTheError) {
+  // Over independent noisy scenes, the mean squared rotation error of the refined pose equals the
+  // mean trace of its predicted covariance (the expected squared norm of the increment), and no
+  // error is far beyond the predicted standard deviation along the least determined axis.
+  double squared_errors = 0.0;
+  double predicted = 0.0;
+  double worst_ratio = 0.0;
+  constexpr int kScenes = 60;
+  for (uint32_t seed = 1; seed <= kScenes; ++seed) {
+    const auto [scene, truth, pose, summary] = RefineFromPerturbedTruth(60, 1.0, seed, 1.0, 2.0);
+    ASSERT_TRUE(summary.converged) << "seed " << seed;
+    ASSERT_TRUE(summary.rotation_covariance.allFinite()) << "seed " << seed;
+    const double error = LogSO3(truth.rotation * pose.rotation.transpose()).norm();
+    squared_errors += error * error;
+    predicted += summary.rotation_covariance.trace();
+    worst_ratio = std::max(worst_ratio, error / summary.RotationStdRad());
+  }
+  // 60 draws of a three-dimensional Gaussian: the ratio is 1 within about 10 % (one sigma).
+  EXPECT_NEAR(squared_errors / predicted, 1.0, 0.4);
+  EXPECT_LT(worst_ratio, 5.0);
+}
+
+TEST(RelativePoseRefinement, NoiseFreeHasNoRotationUncertaintyAndFewPointsAnInfiniteOne) {
+  // {points, pixel noise, outlier ratio, distortion, seed}
+  const testing::SyntheticScene scene = testing::MakeSyntheticScene(2, {40, 0.0, 0.0, true, 4});
+  RelativePose pose = testing::TrueRelativePose(scene);
+  const RelativePoseRefinementSummary exact =
+      RefineRelativePose(scene.bearings[0], scene.bearings[1], AllIndices(40), {}, &pose);
+  ASSERT_TRUE(exact.converged);
+  EXPECT_LT(exact.RotationStdRad(), 1e-9);
+  RelativePose five = testing::TrueRelativePose(scene);
+  const RelativePoseRefinementSummary minimal =
+      RefineRelativePose(scene.bearings[0], scene.bearings[1], {0, 1, 2, 3, 4}, {}, &five);
+  EXPECT_TRUE(std::isinf(minimal.RotationStdRad()));
 }
 
 TEST(RelativePoseRefinement, FewerThanFiveCorrespondencesLeaveThePose) {

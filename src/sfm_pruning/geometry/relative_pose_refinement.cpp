@@ -4,6 +4,7 @@
 #include <limits>
 
 #include <Eigen/Cholesky>
+#include <Eigen/Eigenvalues>
 #include <ceres/jet.h>
 
 #include "sfm_pruning/geometry/so3.hpp"
@@ -63,11 +64,13 @@ class EpipolarProblem {
   }
 
   // Gauss-Newton normal equations at `pose` in the local coordinates, each residual weighted by
-  // the loss's derivative (iteratively reweighted least squares: the same minimum as the loss).
+  // the loss's derivative (iteratively reweighted least squares: the same minimum as the loss),
+  // or unweighted (the pose's covariance); the sum of squared residuals when asked for.
   void NormalEquations(const RelativePose& pose, const Eigen::Matrix<double, 3, 2>& basis, Matrix5d* hessian,
-                       Vector5d* gradient) const {
+                       Vector5d* gradient, bool weighted = true, double* squared_residuals = nullptr) const {
     hessian->setZero();
     gradient->setZero();
+    if (squared_residuals != nullptr) *squared_residuals = 0.0;
     Eigen::Matrix<Jet, 3, 1> translation;
     for (int d = 0; d < 3; ++d) {
       translation[d] = Jet(pose.translation[d]);
@@ -84,7 +87,8 @@ class EpipolarProblem {
         for (int d = 0; d < 3; ++d) rotated[d].v[axis] = derivative[d];
       }
       const Jet r = AngularEpipolarResidual<Jet>(rotated, translation, bearings_j_[k].cast<Jet>());
-      const double weight = Weight(r.a * r.a);
+      const double weight = weighted ? Weight(r.a * r.a) : 1.0;
+      if (squared_residuals != nullptr) *squared_residuals += r.a * r.a;
       const Vector5d jacobian = r.v;
       hessian->noalias() += weight * jacobian * jacobian.transpose();
       gradient->noalias() += weight * r.a * jacobian;
@@ -97,10 +101,37 @@ class EpipolarProblem {
   }
   double Weight(double squared) const { return loss_scale_sq_ > 0.0 ? 1.0 / (1.0 + squared / loss_scale_sq_) : 1.0; }
 
+ public:
+  size_t size() const { return bearings_i_.size(); }
+
+ private:
+
   double loss_scale_sq_;
   std::vector<Eigen::Vector3d> bearings_i_;
   std::vector<Eigen::Vector3d> bearings_j_;
 };
+
+// First-order covariance of the rotation increment at `pose`: sigma^2 (J^T J)^-1, sigma^2 the
+// residuals' variance with five degrees of freedom taken, J unweighted, the translation's two
+// coordinates marginalised (the rotation block of the full inverse). Infinite when J^T J is
+// singular to working precision (a degenerate configuration: too few correspondences or a
+// structure that does not fix the pose).
+Eigen::Matrix3d RotationCovariance(const EpipolarProblem& problem, const RelativePose& pose) {
+  const Eigen::Matrix<double, 3, 2> basis = TangentBasis(pose.translation);
+  Matrix5d normal;
+  Vector5d gradient;
+  double squared_residuals = 0.0;
+  problem.NormalEquations(pose, basis, &normal, &gradient, /*weighted=*/false, &squared_residuals);
+  const Eigen::SelfAdjointEigenSolver<Matrix5d> eigen(normal);
+  const double largest = eigen.eigenvalues().maxCoeff();
+  if (eigen.info() != Eigen::Success || !(eigen.eigenvalues().minCoeff() > 1e-12 * largest)) {
+    return Eigen::Matrix3d::Constant(std::numeric_limits<double>::infinity());
+  }
+  const double variance = squared_residuals / static_cast<double>(problem.size() - kNumParameters);
+  const Matrix5d inverse = eigen.eigenvectors() * eigen.eigenvalues().cwiseInverse().asDiagonal() *
+                           eigen.eigenvectors().transpose();
+  return variance * inverse.topLeftCorner<3, 3>();
+}
 
 RelativePose Step(const RelativePose& pose, const Eigen::Matrix<double, 3, 2>& basis, const Vector5d& step) {
   RelativePose moved;
@@ -166,9 +197,16 @@ RelativePoseRefinementSummary RefineRelativePose(const std::vector<Eigen::Vector
   summary.final_cost = cost;
   summary.converged = pose.rotation.allFinite() && pose.translation.allFinite();
   if (!summary.converged) return summary;
+  if (indices.size() > static_cast<size_t>(kNumParameters)) summary.rotation_covariance = RotationCovariance(problem, pose);
   relative_ij->rotation = pose.rotation;
   relative_ij->translation = pose.translation;
   return summary;
+}
+
+double RelativePoseRefinementSummary::RotationStdRad() const {
+  if (!rotation_covariance.allFinite()) return std::numeric_limits<double>::infinity();
+  const double largest = Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d>(rotation_covariance).eigenvalues().maxCoeff();
+  return std::sqrt(std::max(largest, 0.0));
 }
 
 void RelativePoseRefinementOptions::Check() const {

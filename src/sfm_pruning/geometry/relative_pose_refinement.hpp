@@ -7,6 +7,7 @@
 // fixed exactly: the result always has |t| = 1.
 #pragma once
 
+#include <limits>
 #include <vector>
 
 #include <Eigen/Core>
@@ -31,6 +32,16 @@ struct RelativePoseRefinementSummary {
   // rho the identity or the Cauchy loss (Ceres' convention).
   double initial_cost = 0.0;
   double final_cost = 0.0;
+  // The refined rotation's uncertainty to first order: the covariance (rad^2) of the increment omega
+  // in R_true = Exp(omega) R_refined, from the residuals' own variance (no assumed pixel noise)
+  // and the normal matrix of the angular epipolar errors, the translation direction's coupling
+  // included. A pair of small baseline, a narrow field of view or a near-planar structure, where
+  // a rotation trades against a translation, shows it as a large variance along that axis.
+  // Infinite when the pose is not refined (fewer than 6 correspondences) or degenerate.
+  Eigen::Matrix3d rotation_covariance = Eigen::Matrix3d::Constant(std::numeric_limits<double>::infinity());
+
+  // The standard deviation along the rotation's least determined axis, radians (infinite as above).
+  double RotationStdRad() const;
 };
 
 // Minimises the squared angular epipolar errors (epipolar_geometry.hpp) of the correspondences
