@@ -2,6 +2,7 @@
 #include <gtest/gtest.h>
 
 #include <Eigen/Geometry>
+#include <cmath>
 #include <fstream>
 #include <regex>
 
@@ -28,6 +29,7 @@ TEST(ReportHtml, ViewGraphRecordRoundTrips) {
   RunViewGraph graph = TwoSubgraphGraph(RingScene(10));
   graph.edges.front().relative_pose = {Eigen::AngleAxisd(0.3, Eigen::Vector3d(1, 2, 3).normalized()).toRotationMatrix(),
                                        Eigen::Vector3d(0.6, 0.0, -0.8)};
+  graph.edges.front().rotation_std_deg = 0.37;  // the others were not estimated: infinite, not written
   WriteRunViewGraph(graph, dir / "view_graph.json");
   const RunViewGraph read = ReadRunViewGraph(dir / "view_graph.json");
   ASSERT_EQ(read.views.size(), 10u);
@@ -43,7 +45,9 @@ TEST(ReportHtml, ViewGraphRecordRoundTrips) {
     EXPECT_EQ(read.edges[k].measure, graph.edges[k].measure);
     EXPECT_LT((read.edges[k].relative_pose.rotation - graph.edges[k].relative_pose.rotation).norm(), 1e-12);
     EXPECT_LT((read.edges[k].relative_pose.translation - graph.edges[k].relative_pose.translation).norm(), 1e-12);
+    EXPECT_EQ(read.edges[k].rotation_std_deg, graph.edges[k].rotation_std_deg);
   }
+  EXPECT_TRUE(std::isinf(read.edges.back().rotation_std_deg));
 }
 
 TEST(ReportHtml, CorruptRunFilesAreOneLineErrors) {

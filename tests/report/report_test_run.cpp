@@ -91,7 +91,7 @@ void WriteTestRun(const SfmData& scene, const std::string& engine, const std::fi
   if (engine != "GLOBAL_PRUNED") {
     graph.num_subgraphs = 0;
     for (RunGraphView& view : graph.views) view.subgraph = -1;
-    for (RunGraphEdge& edge : graph.edges) edge = {edge.i, edge.j, edge.inliers, false, "", 0.0, 0.0, "", edge.relative_pose};
+    for (RunGraphEdge& edge : graph.edges) edge = {edge.i, edge.j, edge.inliers, false, "", 0.0, 0.0, "", edge.relative_pose, edge.rotation_std_deg};
   }
   WriteRunViewGraph(graph, dir / "view_graph.json");
   std::ofstream(dir / "timings.json") << R"({"engine": ")" << engine

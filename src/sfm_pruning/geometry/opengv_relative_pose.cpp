@@ -190,6 +190,12 @@ RelativePoseResult EstimateAtThreshold(const std::vector<Eigen::Vector3d>& beari
   result.num_inliers = static_cast<int>(set.inliers.size());
   result.num_inliers_in_front = set.num_in_front;
   result.inliers = std::move(set.inliers);
+  // The uncertainty of the pose as returned: a refinement of no iteration only evaluates it.
+  RelativePoseRefinementOptions evaluate_only;
+  evaluate_only.max_num_iterations = 0;
+  RelativePose evaluated = pose;
+  result.rotation_std_deg =
+      RadToDeg(RefineRelativePose(bearings_i, bearings_j, result.inliers, evaluate_only, &evaluated).RotationStdRad());
   if (result.num_inliers < 5) {
     result.reason = "too few inliers after refinement: " + std::to_string(result.num_inliers);
     return result;

@@ -4,6 +4,7 @@
 // The result is in pose.hpp's convention (X_j = R_ij X_i + t_ij) with |t_ij| = 1.
 #pragma once
 
+#include <limits>
 #include <string>
 #include <vector>
 
@@ -52,6 +53,10 @@ struct RelativePoseResult {
   // equal to the inliers with parallax otherwise).
   int num_inliers_in_front = 0;
   int num_ransac_iterations = 0;
+  // The returned rotation's standard deviation along its least determined axis, degrees, from the
+  // residuals of the inliers (RelativePoseRefinementSummary::RotationStdRad); infinite when it
+  // cannot be estimated (five inliers, a degenerate configuration).
+  double rotation_std_deg = std::numeric_limits<double>::infinity();
 };
 
 // `bearings_i[k]` and `bearings_j[k]` are the unit camera-frame bearings of match k in views i

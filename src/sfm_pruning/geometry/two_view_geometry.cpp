@@ -36,6 +36,7 @@ TwoViewGeometry EstimateTwoViewGeometry(const FeatureSet& features_i, const Came
   const RelativePoseResult estimate = EstimateRelativePose(bearings_i, bearings_j, options.relative_pose);
   geometry.relative_pose = estimate.relative_pose;
   geometry.num_inliers = estimate.num_inliers;
+  geometry.rotation_std_deg = estimate.rotation_std_deg;
   geometry.inlier_ratio = matches.empty() ? 0.0 : static_cast<double>(estimate.num_inliers) / matches.size();
   geometry.inlier_matches.reserve(estimate.inliers.size());
   for (const int k : estimate.inliers) geometry.inlier_matches.push_back(matches[k]);

@@ -3,6 +3,7 @@
 // construction calls per pair (METHOD.md §1).
 #pragma once
 
+#include <limits>
 #include <string>
 #include <vector>
 
@@ -33,6 +34,7 @@ struct TwoViewGeometry {
   std::vector<FeatureMatch> inlier_matches;  // a subset of the input matches, input order
   int num_inliers = 0;
   double inlier_ratio = 0.0;  // num_inliers / number of putative matches
+  double rotation_std_deg = std::numeric_limits<double>::infinity();  // RelativePoseResult's
 };
 
 // `matches[k].i` indexes `features_i`, `matches[k].j` indexes `features_j`; pixels become

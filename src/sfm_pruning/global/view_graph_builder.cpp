@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <atomic>
 #include <exception>
+#include <limits>
 #include <map>
 #include <mutex>
 #include <thread>
@@ -27,6 +28,7 @@ struct PairOutcome {
   std::string reason;
   std::vector<FeatureMatch> inliers;
   RelativePose pose;
+  double rotation_std_deg = std::numeric_limits<double>::infinity();  // when verified here
   size_t num_inliers = 0;
 };
 
@@ -81,6 +83,7 @@ PairOutcome VerifyPair(const ViewGraphBuildOptions& options, const SfmData& scen
   if (geometry.success) {
     outcome.inliers = std::move(geometry.inlier_matches);
     outcome.pose = geometry.relative_pose;
+    outcome.rotation_std_deg = geometry.rotation_std_deg;
   }
   return outcome;
 }
@@ -136,7 +139,8 @@ ViewGraph BuildFromJobs(const ViewGraphBuildOptions& options, const SfmData& sce
       out.rejected_pairs.push_back({jobs[k].pair, outcome.reason, jobs[k].matches->size(), outcome.num_inliers});
       continue;
     }
-    graph.AddEdge(jobs[k].pair.first, jobs[k].pair.second, outcome.inliers, outcome.pose);
+    graph.AddEdge(jobs[k].pair.first, jobs[k].pair.second, outcome.inliers, outcome.pose).rotation_std_deg =
+        outcome.rotation_std_deg;
     ++out.num_verified_pairs;
   }
 

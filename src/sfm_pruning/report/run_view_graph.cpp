@@ -1,6 +1,8 @@
 #include "sfm_pruning/report/run_view_graph.hpp"
 
 #include <array>
+#include <cmath>
+#include <limits>
 #include <map>
 
 #include <Eigen/Geometry>
@@ -49,6 +51,7 @@ RunViewGraph MakeRunViewGraph(const std::string& engine, const ViewGraph& graph,
     record.j = pair.second;
     record.inliers = edge.matches.size();
     record.relative_pose = edge.relative_pose;
+    record.rotation_std_deg = edge.rotation_std_deg;
     const auto cut = removed.find(pair);
     if (cut != removed.end()) {
       record.removed = true;
@@ -77,6 +80,7 @@ void WriteRunViewGraph(const RunViewGraph& graph, const std::filesystem::path& p
                                      {"removed", edge.removed},
                                      {"rotation", {q.w(), q.x(), q.y(), q.z()}},
                                      {"translation", {t.x(), t.y(), t.z()}}};
+    if (std::isfinite(edge.rotation_std_deg)) record["rotation_std_deg"] = edge.rotation_std_deg;
     if (edge.removed) {
       record["reason"] = edge.reason;
       record["value"] = edge.value;
@@ -118,6 +122,7 @@ RunViewGraph ReadRunViewGraph(const std::filesystem::path& path) {
         record.relative_pose.rotation = Eigen::Quaterniond(q[0], q[1], q[2], q[3]).normalized().toRotationMatrix();
         record.relative_pose.translation = Eigen::Vector3d(t[0], t[1], t[2]);
       }
+      record.rotation_std_deg = edge.value("rotation_std_deg", std::numeric_limits<double>::infinity());
       if (record.removed) {
         record.reason = edge.at("reason").get<std::string>();
         record.value = edge.at("value").get<double>();

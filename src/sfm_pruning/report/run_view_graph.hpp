@@ -8,6 +8,7 @@
 
 #include <cstddef>
 #include <filesystem>
+#include <limits>
 #include <string>
 #include <vector>
 
@@ -35,6 +36,9 @@ struct RunGraphEdge {
   // The verified two-view geometry, X_j = R_ij X_i + t_ij with |t_ij| = 1 (sfm/pose.hpp);
   // absent (identity, zero) in files written before it was recorded.
   RelativePose relative_pose;
+  // Its rotation's standard deviation along the least determined axis, degrees (ViewGraphEdge);
+  // infinite when not estimated (a database's pose) and in files written before it was recorded.
+  double rotation_std_deg = std::numeric_limits<double>::infinity();
 };
 
 struct RunViewGraph {
@@ -53,7 +57,8 @@ RunViewGraph MakeRunViewGraph(const std::string& engine, const ViewGraph& graph,
 
 // JSON: {"engine", "num_subgraphs", "views": [{"view_id", "image", "subgraph"}],
 //        "edges": [{"i", "j", "inliers", "removed", "rotation": [qw, qx, qy, qz] of R_ij,
-//                   "translation": t_ij, ["reason", "value", "threshold", "measure"]}]}. Atomic.
+//                   "translation": t_ij, ["rotation_std_deg"], ["reason", "value", "threshold",
+//                   "measure"]}]}. Atomic.
 void WriteRunViewGraph(const RunViewGraph& graph, const std::filesystem::path& path);
 
 // Throws Error naming the file for unreadable JSON, a missing field, an edge whose ends are not

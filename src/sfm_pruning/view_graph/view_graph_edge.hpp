@@ -4,6 +4,7 @@
 // say which pairs were removed, by which stage, and by how much they missed the threshold.
 #pragma once
 
+#include <limits>
 #include <string>
 #include <vector>
 
@@ -77,6 +78,9 @@ struct ViewGraphEdge {
   std::vector<FeatureMatch> matches;
   // Maps camera `first` to camera `second` (sfm/pose.hpp); |t| = 1.
   RelativePose relative_pose;
+  // The verified rotation's standard deviation along its least determined axis, degrees, when the
+  // verification estimated it (RelativePoseResult); infinite otherwise (a pose given by a database).
+  double rotation_std_deg = std::numeric_limits<double>::infinity();
   // Similarity used by spanning trees and Louvain; the number of inliers unless a caller sets it.
   double weight = 0.0;
   bool is_valid = true;
