@@ -38,6 +38,8 @@ const char* CaptureOrderUseName(CaptureOrderOptions::Use use) {
 void CaptureOrderOptions::Check() const {
   RequireInRange<size_t>(neighbour_window_views, 1, 1000, "CaptureOrderOptions::neighbour_window_views");
   RequireInRange(partition_weight_factor, 1.0, 1e6, "CaptureOrderOptions::partition_weight_factor");
+  RequireInRange<size_t>(path_window_views, 1, 1000, "CaptureOrderOptions::path_window_views");
+  RequireInRange(path_max_deviation_deg, 0.0, 180.0, "CaptureOrderOptions::path_max_deviation_deg (0: off)");
 }
 
 CaptureOrderEvidence MeasureCaptureOrder(const ViewGraph& graph) {
@@ -92,12 +94,16 @@ CaptureOrder::CaptureOrder(const CaptureOrderOptions& options, const ViewGraph& 
 }
 
 bool CaptureOrder::AreNeighbours(IndexT a, IndexT b) const {
-  if (!used_) return false;
+  const size_t gap = PlacesApart(a, b);
+  return gap >= 1 && gap <= window_;
+}
+
+size_t CaptureOrder::PlacesApart(IndexT a, IndexT b) const {
+  if (!used_) return 0;
   const auto ra = rank_.find(a);
   const auto rb = rank_.find(b);
-  if (ra == rank_.end() || rb == rank_.end()) return false;
-  const size_t gap = ra->second > rb->second ? ra->second - rb->second : rb->second - ra->second;
-  return gap >= 1 && gap <= window_;
+  if (ra == rank_.end() || rb == rank_.end()) return 0;
+  return ra->second > rb->second ? ra->second - rb->second : rb->second - ra->second;
 }
 
 }  // namespace sfm_pruning

@@ -39,6 +39,12 @@ struct CaptureOrderOptions {
   size_t neighbour_window_views = 2;
   // Louvain weight of an edge between capture neighbours, as a multiple of its usual weight.
   double partition_weight_factor = 10.0;
+  // The capture path's rotations (capture_path_rotations.hpp): the edges between views at most
+  // path_window_views apart are averaged into one rotation per view, and an edge whose relative
+  // rotation deviates from them by more than max(path_max_deviation_deg, 3 s sqrt(m)) is removed
+  // before the partition (s: the path edges' median residual, m: places apart). 0: off.
+  size_t path_window_views = 3;
+  double path_max_deviation_deg = 30.0;
 
   // Throws std::invalid_argument naming the first field out of range (util/option_checks.hpp).
   void Check() const;
@@ -76,6 +82,9 @@ class CaptureOrder {
   // Whether a and b are capture neighbours (both in the graph the order was built on, at most
   // neighbour_window_views apart in id order); false when the order is not used.
   bool AreNeighbours(IndexT a, IndexT b) const;
+  // How many places apart a and b are in id order; 0 when either is not in the order or the order
+  // is not used.
+  size_t PlacesApart(IndexT a, IndexT b) const;
   double PartitionWeightFactor() const { return partition_weight_factor_; }
 
  private:

@@ -342,6 +342,7 @@ const char* InterSubgraphVerdictName(InterSubgraphVerdict verdict) {
     case InterSubgraphVerdict::kUnverified: return "unverified";
     case InterSubgraphVerdict::kModelDisagreement: return "model_disagreement";
     case InterSubgraphVerdict::kLandmarkDisagreement: return "landmark_disagreement";
+    case InterSubgraphVerdict::kCapturePathRotation: return "capture_path_rotation";
     case InterSubgraphVerdict::kMissingCorrespondences: return "missing_correspondences";
   }
   return "unknown";

@@ -117,6 +117,8 @@ enum class InterSubgraphVerdict {
                           // the pruned graph (model_edge_audit.hpp)
   kLandmarkDisagreement,  // kept by the pruning, but too few of its matches agree with the two
                           // subgraphs' landmarks (landmark_match_check.hpp)
+  kCapturePathRotation,   // removed before the partition: its rotation deviates from the capture
+                          // path's (capture_path_rotations.hpp)
   kMissingCorrespondences,  // kept by the pruning, removed because its views miss the landmarks the
                             // model solved from the pruned graph predicts in them
                             // (missing_correspondence_check.hpp)

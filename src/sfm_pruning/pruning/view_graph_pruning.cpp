@@ -288,13 +288,25 @@ void PruneViewGraph(const ViewGraphPruningOptions& options, ViewGraph* graph, co
   out = ViewGraphPruningReport();
   out.num_input_edges = graph->NumValidEdges();
 
-  // 1. Recursive partition of the largest component.
+  // 0. The capture order, and the edges whose rotation the capture path's contradicts.
   auto start = std::chrono::steady_clock::now();
-  const NodeGroup component = LargestComponent(*graph);
-  const ViewGraph component_graph = graph->InducedSubgraph(std::set<IndexT>(component.begin(), component.end()));
+  NodeGroup component = LargestComponent(*graph);
+  ViewGraph component_graph = graph->InducedSubgraph(std::set<IndexT>(component.begin(), component.end()));
   const CaptureOrder capture_order(options.capture_order, component_graph);
   out.capture_order = capture_order.Evidence();
   out.capture_order_used = capture_order.Used();
+  out.capture_path = CheckAgainstCapturePath(options.capture_order, capture_order, component_graph);
+  for (const CapturePathRotationCheck::Deviation& deviation : out.capture_path.removed) {
+    RemoveEdge(deviation.pair, -1, -1, InterSubgraphVerdict::kCapturePathRotation,
+               {EdgeInvalidReason::kRotationResidual, deviation.deviation_deg, deviation.bound_deg}, graph,
+               &out.removed_edges);
+  }
+  if (!out.capture_path.removed.empty()) {
+    component = LargestComponent(*graph);
+    component_graph = graph->InducedSubgraph(std::set<IndexT>(component.begin(), component.end()));
+  }
+
+  // 1. Recursive partition of the largest component.
   out.partition =
       PartitionViewGraph(options.partition, component_graph, views_and_intrinsics, features, capture_order, progress);
   out.timings.push_back({"subgraph partition", SecondsSince(start)});

@@ -38,6 +38,7 @@
 #include "sfm_pruning/pruning/pair_trust.hpp"
 #include "sfm_pruning/pruning/recursive_partition.hpp"
 #include "sfm_pruning/pruning/capture_order.hpp"
+#include "sfm_pruning/pruning/capture_path_rotations.hpp"
 #include "sfm_pruning/pruning/subgraph_alignment.hpp"
 #include "sfm_pruning/pruning/subgraph_loop_consistency.hpp"
 #include "sfm_pruning/pruning/trusted_link_forest.hpp"
@@ -132,6 +133,8 @@ struct RemovedEdge {
 struct ViewGraphPruningReport {
   // What the view graph says about the id order, and whether the pruning used it.
   CaptureOrderEvidence capture_order;
+  // The capture path's rotation check before the partition (capture_path_rotations.hpp).
+  CapturePathRotationCheck capture_path;
   bool capture_order_used = false;
   RecursivePartitionResult partition;
   std::vector<SubgraphPairReport> pairs;  // connected pairs only, (k1, k2) order

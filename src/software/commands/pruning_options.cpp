@@ -53,6 +53,15 @@ void AddCaptureOrderFlags(CLI::App* group, sfm_pruning::CaptureOrderOptions* cap
                     "Louvain weight of an edge between capture neighbours, as a multiple of its weight")
       ->check(CLI::Range(1.0, 1e6))
       ->capture_default_str();
+  group->add_option("--prune_capture_path_window_views", capture_order->path_window_views,
+                    "Capture path: images at most this many places apart give the path's rotations")
+      ->check(CLI::Range(1, 1000))
+      ->capture_default_str();
+  group->add_option("--prune_capture_path_max_deviation_deg", capture_order->path_max_deviation_deg,
+                    "Capture path: an edge whose rotation deviates from the path's by more than this (or the "
+                    "path's drift between its images, if larger) is removed before the partition; 0: off")
+      ->check(CLI::Range(0.0, 180.0))
+      ->capture_default_str();
 }
 
 // Subgraph partition.

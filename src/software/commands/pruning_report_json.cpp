@@ -213,6 +213,15 @@ nlohmann::json CaptureOrderJson(const sfm_pruning::ViewGraphPruningReport& pruni
           {"consecutive_rotation_ratio", evidence.consecutive_rotation_ratio}};
 }
 
+// "capture_path": the capture path's rotation check (the removed edges are in "removed_edges").
+nlohmann::json CapturePathJson(const sfm_pruning::CapturePathRotationCheck& check) {
+  return {{"applied", check.applied},
+          {"path_edges", check.num_path_edges},
+          {"path_views", check.num_path_views},
+          {"path_residual_deg", check.path_residual_deg},
+          {"removed", check.removed.size()}};
+}
+
 // "phases": the time of each stage.
 nlohmann::json StageTimingJson(const sfm_pruning::StageTiming& timing) {
   return {{"stage", timing.stage}, {"seconds", timing.seconds}};
@@ -228,6 +237,7 @@ nlohmann::json PruningReportJson(const sfm_pruning::ViewGraphPruningReport& prun
           {"phases", ArrayJson(pruning.timings, StageTimingJson)},
           {"total_seconds", pruning.total_seconds},
           {"capture_order", CaptureOrderJson(pruning)},
+          {"capture_path", CapturePathJson(pruning.capture_path)},
           {"reference_distinctive_share", pruning.reference_distinctive_share},
           {"reference_coverage", pruning.reference_coverage},
           {"tree", TreeJson(pruning.partition)},
