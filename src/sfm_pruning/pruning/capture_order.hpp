@@ -7,7 +7,9 @@
 // same way against duplicate structure.
 //
 // The order is that of the view ids (images listed by name, or a database's image ids). When it
-// is used, it enters the pruning at two points:
+// is used, it enters the pruning at three points:
+//   - before the partition, the capture path's rotations (capture_path_rotations.hpp): the edges
+//     whose rotation the robustly averaged rotations of the path's edges contradict are removed;
 //   - the partition: an edge between capture neighbours weighs partition_weight_factor times its
 //     weight in Louvain, so communities follow the path instead of gathering the views that see
 //     one copy of the repeated structure;
