@@ -199,8 +199,13 @@ TEST(EnginePrunedScene, DuplicateSceneReportsGlobalVersusPruned) {
   EXPECT_GE(AucAt(run.pruned_eval, 10.0), 95.0);
   EXPECT_FALSE(run.pruned.pruning.removed_edges.empty());
   for (const RemovedEdge& removed : run.pruned.pruning.removed_edges) {
-    // Cut between subgraphs, or by the missing-correspondence check after the first solve.
-    EXPECT_TRUE(removed.invalidation.reason == EdgeInvalidReason::kInterSubgraphInconsistent ||
+    // Cut against the capture path's rotations (the orbit's ids are its capture order: a pair of
+    // views on opposite sides is 180 degrees off), between subgraphs, or by the
+    // missing-correspondence check after the first solve.
+    const bool against_capture_path = removed.verdict == InterSubgraphVerdict::kCapturePathRotation &&
+                                      removed.invalidation.reason == EdgeInvalidReason::kRotationResidual;
+    EXPECT_TRUE(against_capture_path ||
+                removed.invalidation.reason == EdgeInvalidReason::kInterSubgraphInconsistent ||
                 removed.invalidation.reason == EdgeInvalidReason::kSubgraphLoopInconsistent ||
                 removed.invalidation.reason == EdgeInvalidReason::kUnverifiedSubgraphPair ||
                 removed.invalidation.reason == EdgeInvalidReason::kMissingCorrespondences)
