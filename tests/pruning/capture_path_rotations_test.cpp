@@ -53,6 +53,7 @@ TEST(CapturePathRotations, PairsTurnedByTheSymmetryAreRemovedAndTruePairsKept) {
   const CapturePathRotationCheck check = CheckAgainstCapturePath(options, CaptureOrder(options, graph), graph);
   ASSERT_TRUE(check.applied);
   EXPECT_EQ(check.num_path_views, kViews);
+  EXPECT_EQ(check.num_path_pieces, 1u);
   EXPECT_EQ(check.num_path_edges, kViews * 3 - 6);  // 47 + 46 + 45
   EXPECT_LT(check.path_residual_deg, 1.0);
   std::set<ViewPair> removed;
@@ -62,6 +63,27 @@ TEST(CapturePathRotations, PairsTurnedByTheSymmetryAreRemovedAndTruePairsKept) {
     EXPECT_GE(deviation.bound_deg, options.path_max_deviation_deg);
   }
   EXPECT_EQ(removed, twins);  // the neighbour twin (20, 21) too: its neighbours outvote it
+}
+
+TEST(CapturePathRotations, EachPieceOfABrokenPathIsJudgedInItsOwnFrame) {
+  std::set<ViewPair> twins;
+  ViewGraph graph = FoldedOrbit(6, false, &twins);
+  // No pair within the window across the place between views 23 and 24: two pieces of 24 views.
+  for (IndexT a = 21; a <= 23; ++a) {
+    for (IndexT b = 24; b <= a + 3; ++b) graph.InvalidateEdge(a, b, {EdgeInvalidReason::kOther, 0.0, 0.0});
+  }
+  const CaptureOrderOptions options = Sequential();
+  const CapturePathRotationCheck check = CheckAgainstCapturePath(options, CaptureOrder(options, graph), graph);
+  ASSERT_TRUE(check.applied);
+  EXPECT_EQ(check.num_path_pieces, 2u);
+  EXPECT_EQ(check.num_path_views, kViews);
+  std::set<ViewPair> within_pieces;
+  for (const ViewPair& twin : twins) {
+    if ((twin.first < 24) == (twin.second < 24)) within_pieces.insert(twin);
+  }
+  std::set<ViewPair> removed;
+  for (const CapturePathRotationCheck::Deviation& deviation : check.removed) removed.insert(deviation.pair);
+  EXPECT_EQ(removed, within_pieces);  // the twins across the break have no common frame: not judged
 }
 
 TEST(CapturePathRotations, NothingIsJudgedWithoutTheOrderOrWhenOff) {

@@ -2,12 +2,16 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstddef>
 #include <map>
+#include <set>
+#include <vector>
 
 #include <Eigen/Core>
 
 #include "sfm_pruning/global/rotation_averaging.hpp"
 #include "sfm_pruning/sfm/pose.hpp"
+#include "sfm_pruning/view_graph/components.hpp"
 
 namespace sfm_pruning {
 
@@ -25,19 +29,48 @@ CapturePathRotationCheck CheckAgainstCapturePath(const CaptureOrderOptions& opti
   check.num_path_edges = path.NumValidEdges();
   if (check.num_path_edges == 0) return check;
 
-  // The engine's robust averaging (L1, then Geman-McClure), its filter removing the path edges
-  // that disagree with the others: a twin pair between neighbours is outvoted by its neighbours.
+  // Each piece of the path on its own: where no pair within the window was verified (a corner of a
+  // drive, a gap in the photos) the path breaks, and its pieces have no common frame. A piece's
+  // rotations come from the engine's robust averaging (L1, then Geman-McClure, its filter removing
+  // the path edges that disagree with the others: a twin pair between neighbours is outvoted by its
+  // neighbours); the residual scale s is the median over the pieces' path edges.
   std::map<IndexT, Eigen::Matrix3d> rotations;
-  const RotationAveragingResult averaged = EstimateGlobalRotations(&path, RotationAveragingOptions(), &rotations);
-  if (!averaged.success) return check;
+  std::map<IndexT, size_t> piece_of;
+  std::vector<double> residuals;
+  size_t piece = 0;
+  for (const NodeGroup& component : ConnectedComponents(path)) {
+    if (component.size() < 3) break;  // largest first: the rest are pairs and single views
+    ViewGraph piece_graph = path.InducedSubgraph(std::set<IndexT>(component.begin(), component.end()));
+    std::map<IndexT, Eigen::Matrix3d> piece_rotations;
+    const RotationAveragingResult averaged =
+        EstimateGlobalRotations(&piece_graph, RotationAveragingOptions(), &piece_rotations);
+    if (!averaged.success) continue;
+    for (const auto& [view, rotation] : piece_rotations) {
+      rotations[view] = rotation;
+      piece_of[view] = piece;
+    }
+    piece_graph.ForEachValidEdge([&](const ViewPair& pair, const ViewGraphEdge& edge) {
+      const auto ri = piece_rotations.find(pair.first);
+      const auto rj = piece_rotations.find(pair.second);
+      if (ri == piece_rotations.end() || rj == piece_rotations.end()) return;
+      residuals.push_back(
+          RadToDeg(RotationAngleBetween(edge.relative_pose.rotation, rj->second * ri->second.transpose())));
+    });
+    ++piece;
+  }
+  if (rotations.empty()) return check;
   check.applied = true;
   check.num_path_views = rotations.size();
-  check.path_residual_deg = averaged.residuals.median_deg;
+  check.num_path_pieces = piece;
+  std::nth_element(residuals.begin(), residuals.begin() + static_cast<std::ptrdiff_t>(residuals.size() / 2),
+                   residuals.end());
+  check.path_residual_deg = residuals.empty() ? 0.0 : residuals[residuals.size() / 2];
 
   graph.ForEachValidEdge([&](const ViewPair& pair, const ViewGraphEdge& edge) {
     const auto ri = rotations.find(pair.first);
     const auto rj = rotations.find(pair.second);
     if (ri == rotations.end() || rj == rotations.end()) return;
+    if (piece_of.at(pair.first) != piece_of.at(pair.second)) return;  // no common frame
     const size_t apart = order.PlacesApart(pair.first, pair.second);
     const double deviation =
         RadToDeg(RotationAngleBetween(edge.relative_pose.rotation, rj->second * ri->second.transpose()));

@@ -25,6 +25,7 @@ struct CapturePathRotationCheck {
   bool applied = false;        // the order is used, the check is on and the path's rotations were averaged
   size_t num_path_edges = 0;   // valid edges between views at most path_window_views apart
   size_t num_path_views = 0;   // views the averaged path reaches
+  size_t num_path_pieces = 0;  // connected pieces of at least 3 views averaged, each in its own frame
   double path_residual_deg = 0.0;  // s: the median residual of the path edges after averaging
   struct Deviation {
     ViewPair pair;
@@ -36,9 +37,10 @@ struct CapturePathRotationCheck {
 };
 
 // Measures every valid edge of `graph` against the rotations averaged over its capture path (the
-// valid edges between views at most options.path_window_views apart). Nothing is judged when the
-// order is not used, path_max_deviation_deg is 0 or the averaging fails; an edge with an end the
-// path does not reach is not judged. The graph is not changed.
+// valid edges between views at most options.path_window_views apart), each connected piece of the
+// path (at least 3 views) averaged in its own frame. Nothing is judged when the order is not used
+// or path_max_deviation_deg is 0; an edge is judged only when both its views are in one averaged
+// piece. The graph is not changed.
 CapturePathRotationCheck CheckAgainstCapturePath(const CaptureOrderOptions& options, const CaptureOrder& order,
                                                  const ViewGraph& graph);
 

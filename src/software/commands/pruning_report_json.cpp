@@ -218,6 +218,7 @@ nlohmann::json CapturePathJson(const sfm_pruning::CapturePathRotationCheck& chec
   return {{"applied", check.applied},
           {"path_edges", check.num_path_edges},
           {"path_views", check.num_path_views},
+          {"path_pieces", check.num_path_pieces},
           {"path_residual_deg", check.path_residual_deg},
           {"removed", check.removed.size()}};
 }
