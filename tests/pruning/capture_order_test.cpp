@@ -131,6 +131,16 @@ TEST(CaptureOrder, CheckRejectsOutOfRangeOptions) {
   EXPECT_THROW(options.Check(), std::invalid_argument);
   options.partition_weight_factor = std::nan("");
   EXPECT_THROW(options.Check(), std::invalid_argument);
+  options = CaptureOrderOptions();
+  options.path_window_views = 0;
+  EXPECT_THROW(options.Check(), std::invalid_argument);
+  options = CaptureOrderOptions();
+  options.path_max_deviation_deg = 200.0;
+  EXPECT_THROW(options.Check(), std::invalid_argument);
+  options.path_max_deviation_deg = 0.0;  // off
+  EXPECT_NO_THROW(options.Check());
+  options = CaptureOrderOptions();
+  options.partition_weight_factor = std::nan("");
   EXPECT_THROW(CaptureOrder(options, ViewGraph()), std::invalid_argument);
   EXPECT_STREQ(CaptureOrderUseName(CaptureOrderOptions::Use::kSequential), "sequential");
 }

@@ -112,14 +112,5 @@ TEST(CapturePathRotations, TheBoundGrowsWithTheDriftOverThePlacesApart) {
   }
 }
 
-TEST(CapturePathRotations, OptionsAreChecked) {
-  CaptureOrderOptions options;
-  options.path_window_views = 0;
-  EXPECT_THROW(options.Check(), std::invalid_argument);
-  options = CaptureOrderOptions();
-  options.path_max_deviation_deg = 200.0;
-  EXPECT_THROW(options.Check(), std::invalid_argument);
-}
-
 }  // namespace
 }  // namespace sfm_pruning

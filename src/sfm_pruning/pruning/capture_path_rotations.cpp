@@ -2,18 +2,27 @@
 
 #include <algorithm>
 #include <cmath>
-#include <cstddef>
 #include <map>
 #include <set>
+#include <utility>
 #include <vector>
 
 #include <Eigen/Core>
 
 #include "sfm_pruning/global/rotation_averaging.hpp"
 #include "sfm_pruning/sfm/pose.hpp"
+#include "sfm_pruning/util/statistics.hpp"
 #include "sfm_pruning/view_graph/components.hpp"
 
 namespace sfm_pruning {
+namespace {
+
+// Degrees between an edge's relative rotation and the one its views' rotations imply, R_j R_i^T.
+double DeviationDeg(const ViewGraphEdge& edge, const Eigen::Matrix3d& rotation_i, const Eigen::Matrix3d& rotation_j) {
+  return RadToDeg(RotationAngleBetween(edge.relative_pose.rotation, rotation_j * rotation_i.transpose()));
+}
+
+}  // namespace
 
 CapturePathRotationCheck CheckAgainstCapturePath(const CaptureOrderOptions& options, const CaptureOrder& order,
                                                  const ViewGraph& graph) {
@@ -53,8 +62,7 @@ CapturePathRotationCheck CheckAgainstCapturePath(const CaptureOrderOptions& opti
       const auto ri = piece_rotations.find(pair.first);
       const auto rj = piece_rotations.find(pair.second);
       if (ri == piece_rotations.end() || rj == piece_rotations.end()) return;
-      residuals.push_back(
-          RadToDeg(RotationAngleBetween(edge.relative_pose.rotation, rj->second * ri->second.transpose())));
+      residuals.push_back(DeviationDeg(edge, ri->second, rj->second));
     });
     ++piece;
   }
@@ -62,9 +70,7 @@ CapturePathRotationCheck CheckAgainstCapturePath(const CaptureOrderOptions& opti
   check.applied = true;
   check.num_path_views = rotations.size();
   check.num_path_pieces = piece;
-  std::nth_element(residuals.begin(), residuals.begin() + static_cast<std::ptrdiff_t>(residuals.size() / 2),
-                   residuals.end());
-  check.path_residual_deg = residuals.empty() ? 0.0 : residuals[residuals.size() / 2];
+  check.path_residual_deg = Median(std::move(residuals));
 
   graph.ForEachValidEdge([&](const ViewPair& pair, const ViewGraphEdge& edge) {
     const auto ri = rotations.find(pair.first);
@@ -72,8 +78,7 @@ CapturePathRotationCheck CheckAgainstCapturePath(const CaptureOrderOptions& opti
     if (ri == rotations.end() || rj == rotations.end()) return;
     if (piece_of.at(pair.first) != piece_of.at(pair.second)) return;  // no common frame
     const size_t apart = order.PlacesApart(pair.first, pair.second);
-    const double deviation =
-        RadToDeg(RotationAngleBetween(edge.relative_pose.rotation, rj->second * ri->second.transpose()));
+    const double deviation = DeviationDeg(edge, ri->second, rj->second);
     const double drift = 3.0 * check.path_residual_deg * std::sqrt(static_cast<double>(apart));
     const double bound = std::max(options.path_max_deviation_deg, drift);
     if (deviation > bound) check.removed.push_back({pair, apart, deviation, bound});
