@@ -303,11 +303,11 @@ TEST(CliReconstruct, PrunedEngineReconstructsAndWritesThePruningReport) {
   EXPECT_NE(result.err.find("pruning: "), std::string::npos) << result.err;
   const nlohmann::json report = nlohmann::json::parse(std::ifstream(out / "pruning_report.json"));
   EXPECT_GE(report.at("tree").size(), 1u);
-  // The pruning's phases (the model audit is off by default), then the missing-correspondence check:
-  // on a clean scene one round that removes nothing.
+  // The pruning's phases (the scene is a sequential capture; the model audit is off by default), then
+  // the missing-correspondence check: on a clean scene one round that removes nothing.
   std::vector<std::string> phases;
   for (const nlohmann::json& phase : report.at("phases")) phases.push_back(phase.at("stage").get<std::string>());
-  EXPECT_EQ(phases, (std::vector<std::string>{"subgraph partition", "inter-subgraph pruning",
+  EXPECT_EQ(phases, (std::vector<std::string>{"capture path", "subgraph partition", "inter-subgraph pruning",
                                               "landmark check of matches", "solve for the missing-correspondence check",
                                               "missing-correspondence check"}));
   EXPECT_TRUE(report.at("removed_edges").is_array());

@@ -102,6 +102,29 @@ TEST(CaptureOrder, NeighboursAreCountedInIdOrderWithinTheWindow) {
   EXPECT_DOUBLE_EQ(order.PartitionWeightFactor(), 10.0);
 }
 
+TEST(CaptureOrder, ThePathGraphKeepsTheEdgesWithinItsWindowInPlaces) {
+  std::vector<IndexT> ids;
+  for (IndexT k = 0; k < 40; ++k) ids.push_back(k < 20 ? 2 * k : 2 * k + 100);
+  ViewGraph graph = OrbitGraph(ids, SparseKeep);
+  graph.MutableEdge(10, 12)->is_valid = false;  // an invalid edge stays out
+  const CaptureOrder order(CaptureOrderOptions(), graph);
+  const ViewGraph path = order.PathGraph(graph, 3);
+  EXPECT_EQ(path.NumNodes(), graph.NumNodes());
+  size_t expected = 0;
+  graph.ForEachValidEdge([&](const ViewPair& pair, const ViewGraphEdge&) {
+    const size_t apart = order.PlacesApart(pair.first, pair.second);
+    if (apart <= 3) ++expected;
+    EXPECT_EQ(path.HasValidEdge(pair.first, pair.second), apart <= 3) << pair.first << "-" << pair.second;
+  });
+  EXPECT_EQ(path.NumValidEdges(), expected);
+  EXPECT_TRUE(path.HasValidEdge(38, 140));  // consecutive places across the gap in the ids
+  EXPECT_FALSE(path.HasValidEdge(10, 12));
+
+  CaptureOrderOptions unordered;
+  unordered.use = CaptureOrderOptions::Use::kUnordered;
+  EXPECT_EQ(CaptureOrder(unordered, graph).PathGraph(graph, 3).NumValidEdges(), 0u);
+}
+
 TEST(CaptureOrder, TheUserCanOverrideTheEvidence) {
   const ViewGraph ordered = OrbitGraph(InOrder(40), SparseKeep);
   const ViewGraph shuffled = OrbitGraph(Shuffled(40, 3), SparseKeep);
@@ -138,6 +161,13 @@ TEST(CaptureOrder, CheckRejectsOutOfRangeOptions) {
   options.path_max_deviation_deg = 200.0;
   EXPECT_THROW(options.Check(), std::invalid_argument);
   options.path_max_deviation_deg = 0.0;  // off
+  EXPECT_NO_THROW(options.Check());
+  options = CaptureOrderOptions();
+  options.path_max_direction_deviation_deg = -1.0;
+  EXPECT_THROW(options.Check(), std::invalid_argument);
+  options.path_max_direction_deviation_deg = std::nan("");
+  EXPECT_THROW(options.Check(), std::invalid_argument);
+  options.path_max_direction_deviation_deg = 0.0;  // off
   EXPECT_NO_THROW(options.Check());
   options = CaptureOrderOptions();
   options.partition_weight_factor = std::nan("");

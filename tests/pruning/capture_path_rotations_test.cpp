@@ -57,7 +57,7 @@ TEST(CapturePathRotations, PairsTurnedByTheSymmetryAreRemovedAndTruePairsKept) {
   EXPECT_EQ(check.num_path_edges, kViews * 3 - 6);  // 47 + 46 + 45
   EXPECT_LT(check.path_residual_deg, 1.0);
   std::set<ViewPair> removed;
-  for (const CapturePathRotationCheck::Deviation& deviation : check.removed) {
+  for (const CapturePathDeviation& deviation : check.removed) {
     removed.insert(deviation.pair);
     EXPECT_NEAR(deviation.deviation_deg, 90.0, 5.0);
     EXPECT_GE(deviation.bound_deg, options.path_max_deviation_deg);
@@ -82,7 +82,7 @@ TEST(CapturePathRotations, EachPieceOfABrokenPathIsJudgedInItsOwnFrame) {
     if ((twin.first < 24) == (twin.second < 24)) within_pieces.insert(twin);
   }
   std::set<ViewPair> removed;
-  for (const CapturePathRotationCheck::Deviation& deviation : check.removed) removed.insert(deviation.pair);
+  for (const CapturePathDeviation& deviation : check.removed) removed.insert(deviation.pair);
   EXPECT_EQ(removed, within_pieces);  // the twins across the break have no common frame: not judged
 }
 
@@ -106,7 +106,7 @@ TEST(CapturePathRotations, TheBoundGrowsWithTheDriftOverThePlacesApart) {
   options.path_max_deviation_deg = 1.0;  // below the drift: the drift term decides
   const CapturePathRotationCheck check = CheckAgainstCapturePath(options, CaptureOrder(options, graph), graph);
   ASSERT_TRUE(check.applied);
-  for (const CapturePathRotationCheck::Deviation& deviation : check.removed) {
+  for (const CapturePathDeviation& deviation : check.removed) {
     const double drift = 3.0 * check.path_residual_deg * std::sqrt(static_cast<double>(deviation.places_apart));
     EXPECT_NEAR(deviation.bound_deg, std::max(1.0, drift), 1e-12);
   }

@@ -71,11 +71,11 @@ TEST(EnginePrunedScene, CleanSceneIsNotHarmed) {
   ASSERT_TRUE(run.pruned.engine.success) << run.pruned.engine.message;
   ExpectWellFormedPartition(run.pruned.pruning.partition);
   EXPECT_GE(run.pruned.pruning.partition.accepted.size(), 2u);
-  // The pruning's phases (the model audit is off by default), then one round of the
-  // missing-correspondence check: on a clean scene it removes nothing, and its solve is the final one.
+  // The pruning's phases (the scene is a sequential capture; the model audit is off by default),
+  // then one round of the missing-correspondence check: on a clean scene it removes nothing, and its solve is the final one.
   std::vector<std::string> phases;
   for (const StageTiming& timing : run.pruned.pruning.timings) phases.push_back(timing.stage);
-  EXPECT_EQ(phases, (std::vector<std::string>{"subgraph partition", "inter-subgraph pruning",
+  EXPECT_EQ(phases, (std::vector<std::string>{"capture path", "subgraph partition", "inter-subgraph pruning",
                                               "landmark check of matches", "solve for the missing-correspondence check",
                                               "missing-correspondence check"}));
   ASSERT_EQ(run.pruned.pruning.missing_correspondence_rounds.size(), 1u);
@@ -106,7 +106,7 @@ TEST(EnginePrunedScene, TheAuditedModelIsAdjustedNotSolvedAgain) {
   ASSERT_TRUE(run.pruned.engine.success) << run.pruned.engine.message;
   std::vector<std::string> phases;
   for (const StageTiming& timing : run.pruned.pruning.timings) phases.push_back(timing.stage);
-  EXPECT_EQ(phases, (std::vector<std::string>{"subgraph partition", "inter-subgraph pruning",
+  EXPECT_EQ(phases, (std::vector<std::string>{"capture path", "subgraph partition", "inter-subgraph pruning",
                                               "landmark check of matches", "solve before the audit", "model audit"}));
   // The final solve adjusts the audited model: no rotation averaging or positioning again, and one
   // adjustment round fewer than a solve from scratch (the audit's adjustment was the first).
@@ -199,11 +199,13 @@ TEST(EnginePrunedScene, DuplicateSceneReportsGlobalVersusPruned) {
   EXPECT_GE(AucAt(run.pruned_eval, 10.0), 95.0);
   EXPECT_FALSE(run.pruned.pruning.removed_edges.empty());
   for (const RemovedEdge& removed : run.pruned.pruning.removed_edges) {
-    // Cut against the capture path's rotations (the orbit's ids are its capture order: a pair of
-    // views on opposite sides is 180 degrees off), between subgraphs, or by the
+    // Cut against the capture path's rotations or its model's directions (the orbit's ids are its
+    // capture order: a pair of views on opposite sides is 180 degrees off), between subgraphs, or by the
     // missing-correspondence check after the first solve.
-    const bool against_capture_path = removed.verdict == InterSubgraphVerdict::kCapturePathRotation &&
-                                      removed.invalidation.reason == EdgeInvalidReason::kRotationResidual;
+    const bool against_capture_path = (removed.verdict == InterSubgraphVerdict::kCapturePathRotation &&
+                                       removed.invalidation.reason == EdgeInvalidReason::kRotationResidual) ||
+                                      (removed.verdict == InterSubgraphVerdict::kCapturePathDirection &&
+                                       removed.invalidation.reason == EdgeInvalidReason::kTranslationDirection);
     EXPECT_TRUE(against_capture_path ||
                 removed.invalidation.reason == EdgeInvalidReason::kInterSubgraphInconsistent ||
                 removed.invalidation.reason == EdgeInvalidReason::kSubgraphLoopInconsistent ||

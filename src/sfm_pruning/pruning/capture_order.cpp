@@ -40,6 +40,8 @@ void CaptureOrderOptions::Check() const {
   RequireInRange(partition_weight_factor, 1.0, 1e6, "CaptureOrderOptions::partition_weight_factor");
   RequireInRange<size_t>(path_window_views, 1, 1000, "CaptureOrderOptions::path_window_views");
   RequireInRange(path_max_deviation_deg, 0.0, 180.0, "CaptureOrderOptions::path_max_deviation_deg (0: off)");
+  RequireInRange(path_max_direction_deviation_deg, 0.0, 180.0,
+                 "CaptureOrderOptions::path_max_direction_deviation_deg (0: off)");
 }
 
 CaptureOrderEvidence MeasureCaptureOrder(const ViewGraph& graph) {
@@ -104,6 +106,16 @@ size_t CaptureOrder::PlacesApart(IndexT a, IndexT b) const {
   const auto rb = rank_.find(b);
   if (ra == rank_.end() || rb == rank_.end()) return 0;
   return ra->second > rb->second ? ra->second - rb->second : rb->second - ra->second;
+}
+
+ViewGraph CaptureOrder::PathGraph(const ViewGraph& graph, size_t window_views) const {
+  ViewGraph path;
+  for (const IndexT view : graph.Nodes()) path.AddNode(view);
+  graph.ForEachValidEdge([&](const ViewPair& pair, const ViewGraphEdge& edge) {
+    const size_t apart = PlacesApart(pair.first, pair.second);
+    if (apart >= 1 && apart <= window_views) path.AddEdge(pair, edge);
+  });
+  return path;
 }
 
 }  // namespace sfm_pruning

@@ -7,9 +7,11 @@
 // same way against duplicate structure.
 //
 // The order is that of the view ids (images listed by name, or a database's image ids). When it
-// is used, it enters the pruning at three points:
+// is used, it enters the pruning at four points:
 //   - before the partition, the capture path's rotations (capture_path_rotations.hpp): the edges
 //     whose rotation the robustly averaged rotations of the path's edges contradict are removed;
+//   - then the capture path's model (capture_path_directions.hpp): the edges between views far
+//     apart whose translation direction the model solved from the path's edges contradicts;
 //   - the partition: an edge between capture neighbours weighs partition_weight_factor times its
 //     weight in Louvain, so communities follow the path instead of gathering the views that see
 //     one copy of the repeated structure;
@@ -47,9 +49,24 @@ struct CaptureOrderOptions {
   // before the partition (s: the path edges' median residual, m: places apart). 0: off.
   size_t path_window_views = 3;
   double path_max_deviation_deg = 30.0;
+  // The capture path's model (capture_path_directions.hpp): the path's edges solved by the GLOBAL
+  // engine, and an edge between views more than path_window_views apart whose translation
+  // direction deviates from the model's by more than max(path_max_direction_deviation_deg,
+  // 3 s sqrt(m)) is removed before the partition (s: the path edges' median direction residual).
+  // 0: off.
+  double path_max_direction_deviation_deg = 10.0;
 
   // Throws std::invalid_argument naming the first field out of range (util/option_checks.hpp).
   void Check() const;
+};
+
+// An edge the capture path's rotations or model contradict (capture_path_rotations.hpp,
+// capture_path_directions.hpp): by how many degrees, against which bound.
+struct CapturePathDeviation {
+  ViewPair pair;
+  size_t places_apart = 0;
+  double deviation_deg = 0.0;
+  double bound_deg = 0.0;
 };
 
 // "auto", "sequential", "unordered".
@@ -87,6 +104,9 @@ class CaptureOrder {
   // How many places apart a and b are in id order; 0 when either is not in the order or the order
   // is not used.
   size_t PlacesApart(IndexT a, IndexT b) const;
+  // The capture path of `graph`: its views and its valid edges between views 1 to window_views
+  // places apart (empty of edges when the order is not used).
+  ViewGraph PathGraph(const ViewGraph& graph, size_t window_views) const;
   double PartitionWeightFactor() const { return partition_weight_factor_; }
 
  private:

@@ -29,12 +29,7 @@ CapturePathRotationCheck CheckAgainstCapturePath(const CaptureOrderOptions& opti
   CapturePathRotationCheck check;
   if (!order.Used() || options.path_max_deviation_deg <= 0.0) return check;
 
-  ViewGraph path;
-  for (const IndexT view : graph.Nodes()) path.AddNode(view);
-  graph.ForEachValidEdge([&](const ViewPair& pair, const ViewGraphEdge& edge) {
-    const size_t apart = order.PlacesApart(pair.first, pair.second);
-    if (apart >= 1 && apart <= options.path_window_views) path.AddEdge(pair, edge);
-  });
+  const ViewGraph path = order.PathGraph(graph, options.path_window_views);
   check.num_path_edges = path.NumValidEdges();
   if (check.num_path_edges == 0) return check;
 

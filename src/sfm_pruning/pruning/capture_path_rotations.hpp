@@ -27,13 +27,7 @@ struct CapturePathRotationCheck {
   size_t num_path_views = 0;   // views the averaged path reaches
   size_t num_path_pieces = 0;  // connected pieces of at least 3 views averaged, each in its own frame
   double path_residual_deg = 0.0;  // s: the median residual of the path edges after averaging
-  struct Deviation {
-    ViewPair pair;
-    size_t places_apart = 0;
-    double deviation_deg = 0.0;
-    double bound_deg = 0.0;
-  };
-  std::vector<Deviation> removed;  // the edges above their bound, ViewPair order
+  std::vector<CapturePathDeviation> removed;  // the edges above their bound, ViewPair order
 };
 
 // Measures every valid edge of `graph` against the rotations averaged over its capture path (the

@@ -343,6 +343,7 @@ const char* InterSubgraphVerdictName(InterSubgraphVerdict verdict) {
     case InterSubgraphVerdict::kModelDisagreement: return "model_disagreement";
     case InterSubgraphVerdict::kLandmarkDisagreement: return "landmark_disagreement";
     case InterSubgraphVerdict::kCapturePathRotation: return "capture_path_rotation";
+    case InterSubgraphVerdict::kCapturePathDirection: return "capture_path_direction";
     case InterSubgraphVerdict::kMissingCorrespondences: return "missing_correspondences";
   }
   return "unknown";

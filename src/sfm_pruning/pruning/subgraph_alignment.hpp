@@ -122,6 +122,8 @@ enum class InterSubgraphVerdict {
   kMissingCorrespondences,  // kept by the pruning, removed because its views miss the landmarks the
                             // model solved from the pruned graph predicts in them
                             // (missing_correspondence_check.hpp)
+  kCapturePathDirection,    // removed before the partition: its translation direction deviates from
+                            // the capture path's model (capture_path_directions.hpp)
 };
 
 const char* InterSubgraphVerdictName(InterSubgraphVerdict verdict);

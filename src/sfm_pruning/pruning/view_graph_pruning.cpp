@@ -288,22 +288,35 @@ void PruneViewGraph(const ViewGraphPruningOptions& options, ViewGraph* graph, co
   out = ViewGraphPruningReport();
   out.num_input_edges = graph->NumValidEdges();
 
-  // 0. The capture order, and the edges whose rotation the capture path's contradicts.
+  // 0. The capture order, and the edges whose rotation the capture path's contradicts, then those
+  // whose translation direction the model solved from the path contradicts.
   auto start = std::chrono::steady_clock::now();
   NodeGroup component = LargestComponent(*graph);
   ViewGraph component_graph = graph->InducedSubgraph(std::set<IndexT>(component.begin(), component.end()));
   const CaptureOrder capture_order(options.capture_order, component_graph);
   out.capture_order = capture_order.Evidence();
   out.capture_order_used = capture_order.Used();
-  out.capture_path = CheckAgainstCapturePath(options.capture_order, capture_order, component_graph);
-  for (const CapturePathRotationCheck::Deviation& deviation : out.capture_path.removed) {
-    RemoveEdge(deviation.pair, -1, -1, InterSubgraphVerdict::kCapturePathRotation,
-               {EdgeInvalidReason::kRotationResidual, deviation.deviation_deg, deviation.bound_deg}, graph,
-               &out.removed_edges);
-  }
-  if (!out.capture_path.removed.empty()) {
+  // Removes the edges a capture-path check contradicts; the largest component may shrink.
+  const auto remove_deviations = [&](const std::vector<CapturePathDeviation>& deviations,
+                                     InterSubgraphVerdict verdict, EdgeInvalidReason reason) {
+    for (const CapturePathDeviation& deviation : deviations) {
+      RemoveEdge(deviation.pair, -1, -1, verdict, {reason, deviation.deviation_deg, deviation.bound_deg}, graph,
+                 &out.removed_edges);
+    }
+    if (deviations.empty()) return;
     component = LargestComponent(*graph);
     component_graph = graph->InducedSubgraph(std::set<IndexT>(component.begin(), component.end()));
+  };
+  out.capture_path = CheckAgainstCapturePath(options.capture_order, capture_order, component_graph);
+  remove_deviations(out.capture_path.removed, InterSubgraphVerdict::kCapturePathRotation,
+                    EdgeInvalidReason::kRotationResidual);
+  out.capture_path_directions = CheckDirectionsAgainstCapturePath(options.capture_order, capture_order, component_graph,
+                                                                  options.partition.engine, views_and_intrinsics, features);
+  remove_deviations(out.capture_path_directions.removed, InterSubgraphVerdict::kCapturePathDirection,
+                    EdgeInvalidReason::kTranslationDirection);
+  if (out.capture_path.applied || out.capture_path_directions.solved) {
+    out.timings.push_back({"capture path", SecondsSince(start)});
+    start = std::chrono::steady_clock::now();
   }
 
   // 1. Recursive partition of the largest component.

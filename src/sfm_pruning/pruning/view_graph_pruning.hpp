@@ -38,6 +38,7 @@
 #include "sfm_pruning/pruning/pair_trust.hpp"
 #include "sfm_pruning/pruning/recursive_partition.hpp"
 #include "sfm_pruning/pruning/capture_order.hpp"
+#include "sfm_pruning/pruning/capture_path_directions.hpp"
 #include "sfm_pruning/pruning/capture_path_rotations.hpp"
 #include "sfm_pruning/pruning/subgraph_alignment.hpp"
 #include "sfm_pruning/pruning/subgraph_loop_consistency.hpp"
@@ -135,6 +136,8 @@ struct ViewGraphPruningReport {
   CaptureOrderEvidence capture_order;
   // The capture path's rotation check before the partition (capture_path_rotations.hpp).
   CapturePathRotationCheck capture_path;
+  // Then the direction check against the capture path's model (capture_path_directions.hpp).
+  CapturePathDirectionCheck capture_path_directions;
   bool capture_order_used = false;
   RecursivePartitionResult partition;
   std::vector<SubgraphPairReport> pairs;  // connected pairs only, (k1, k2) order

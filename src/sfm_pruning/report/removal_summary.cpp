@@ -112,6 +112,10 @@ std::string RemovalReasonInWords(const std::string& reason) {
       {"model_disagreement", "the model solved from the pruned graph does not reproduce their matches"},
       {"landmark_disagreement", "too few of their matches agree with the two subgraphs' landmarks"},
       {"rotation_residual", "their relative rotation disagrees with the averaged rotations"},
+      {"translation_direction",
+       "their translation direction disagrees with the model solved from the pairs along the capture path"},
+      {"missing_correspondences", "their views miss far more of the landmarks the solved model predicts in them "
+                                  "than the other edges do"},
       {"too_few_inliers", "they have too few inlier matches"},
       {"low_inlier_ratio", "too few of their putative matches are inliers"},
       {"other", "the inter-subgraph vote could not place or judge them"},

@@ -24,6 +24,8 @@ std::string EdgeInvalidReasonName(EdgeInvalidReason reason) {
       return "landmark_disagreement";
     case EdgeInvalidReason::kMissingCorrespondences:
       return "missing_correspondences";
+    case EdgeInvalidReason::kTranslationDirection:
+      return "translation_direction";
     case EdgeInvalidReason::kOther:
       return "other";
   }
@@ -70,6 +72,7 @@ EdgeMeasure DefaultEdgeMeasure(EdgeInvalidReason reason) {
       return EdgeMeasure::kInlierRatio;
     case EdgeInvalidReason::kRotationResidual:
     case EdgeInvalidReason::kInterSubgraphInconsistent:
+    case EdgeInvalidReason::kTranslationDirection:
       return EdgeMeasure::kDegrees;
     case EdgeInvalidReason::kSubgraphLoopInconsistent:
       return EdgeMeasure::kBrokenLoops;

@@ -31,6 +31,8 @@ enum class EdgeInvalidReason {
                                // (pruning/landmark_match_check.hpp)
   kMissingCorrespondences,     // value: share of the landmarks the model predicts in its views that they
                                // observe, threshold: the round's bound (pruning/missing_correspondence_check.hpp)
+  kTranslationDirection,       // value: deg between t_ij and the direction a model of its views implies
+                               // (pruning/capture_path_directions.hpp)
   kOther,                      // any other stage; value is stage-defined
 };
 

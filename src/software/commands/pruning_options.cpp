@@ -54,12 +54,19 @@ void AddCaptureOrderFlags(CLI::App* group, sfm_pruning::CaptureOrderOptions* cap
       ->check(CLI::Range(1.0, 1e6))
       ->capture_default_str();
   group->add_option("--prune_capture_path_window_views", capture_order->path_window_views,
-                    "Capture path: images at most this many places apart give the path's rotations")
+                    "Capture path: images at most this many places apart give the path's rotations and model")
       ->check(CLI::Range(1, 1000))
       ->capture_default_str();
   group->add_option("--prune_capture_path_max_deviation_deg", capture_order->path_max_deviation_deg,
                     "Capture path: an edge whose rotation deviates from the path's by more than this (or the "
                     "path's drift between its images, if larger) is removed before the partition; 0: off")
+      ->check(CLI::Range(0.0, 180.0))
+      ->capture_default_str();
+  group->add_option("--prune_capture_path_max_direction_deviation_deg",
+                    capture_order->path_max_direction_deviation_deg,
+                    "Capture path: an edge between images further apart than the path's window whose translation "
+                    "direction deviates by more than this (or the path's drift, if larger) from the model solved from "
+                    "the path's edges is removed before the partition; 0: off")
       ->check(CLI::Range(0.0, 180.0))
       ->capture_default_str();
 }

@@ -223,6 +223,18 @@ nlohmann::json CapturePathJson(const sfm_pruning::CapturePathRotationCheck& chec
           {"removed", check.removed.size()}};
 }
 
+// "capture_path_directions": the direction check against the capture path's model (the removed
+// edges are in "removed_edges").
+nlohmann::json CapturePathDirectionsJson(const sfm_pruning::CapturePathDirectionCheck& check) {
+  return {{"solved", check.solved},
+          {"applied", check.applied},
+          {"path_edges", check.num_path_edges},
+          {"path_views", check.num_path_views},
+          {"path_pieces", check.num_path_pieces},
+          {"path_residual_deg", check.path_residual_deg},
+          {"removed", check.removed.size()}};
+}
+
 // "phases": the time of each stage.
 nlohmann::json StageTimingJson(const sfm_pruning::StageTiming& timing) {
   return {{"stage", timing.stage}, {"seconds", timing.seconds}};
@@ -239,6 +251,7 @@ nlohmann::json PruningReportJson(const sfm_pruning::ViewGraphPruningReport& prun
           {"total_seconds", pruning.total_seconds},
           {"capture_order", CaptureOrderJson(pruning)},
           {"capture_path", CapturePathJson(pruning.capture_path)},
+          {"capture_path_directions", CapturePathDirectionsJson(pruning.capture_path_directions)},
           {"reference_distinctive_share", pruning.reference_distinctive_share},
           {"reference_coverage", pruning.reference_coverage},
           {"tree", TreeJson(pruning.partition)},
