@@ -1,11 +1,15 @@
 #include "sfm_pruning/pruning/capture_order.hpp"
 
+#include <algorithm>
+#include <cmath>
 #include <cstdlib>
+#include <set>
 #include <vector>
 
 #include "sfm_pruning/sfm/pose.hpp"
 #include "sfm_pruning/util/option_checks.hpp"
 #include "sfm_pruning/util/statistics.hpp"
+#include "sfm_pruning/view_graph/components.hpp"
 
 namespace sfm_pruning {
 namespace {
@@ -106,6 +110,19 @@ size_t CaptureOrder::PlacesApart(IndexT a, IndexT b) const {
   const auto rb = rank_.find(b);
   if (ra == rank_.end() || rb == rank_.end()) return 0;
   return ra->second > rb->second ? ra->second - rb->second : rb->second - ra->second;
+}
+
+std::vector<ViewGraph> CapturePathPieces(const ViewGraph& path) {
+  std::vector<ViewGraph> pieces;
+  for (const NodeGroup& component : ConnectedComponents(path)) {
+    if (component.size() < 3) break;  // largest first: the rest are pairs and single views
+    pieces.push_back(path.InducedSubgraph(std::set<IndexT>(component.begin(), component.end())));
+  }
+  return pieces;
+}
+
+double CapturePathBoundDeg(double min_deg, double path_residual_deg, size_t places_apart) {
+  return std::max(min_deg, 3.0 * path_residual_deg * std::sqrt(static_cast<double>(places_apart)));
 }
 
 ViewGraph CaptureOrder::PathGraph(const ViewGraph& graph, size_t window_views) const {

@@ -28,6 +28,7 @@
 #include <cstddef>
 #include <map>
 #include <string>
+#include <vector>
 
 #include "sfm_pruning/sfm/types.hpp"
 #include "sfm_pruning/view_graph/view_graph.hpp"
@@ -68,6 +69,16 @@ struct CapturePathDeviation {
   double deviation_deg = 0.0;
   double bound_deg = 0.0;
 };
+
+// The connected pieces of a capture path (CaptureOrder::PathGraph) with at least 3 views, largest
+// first, each as the path's graph induced on it: where no pair within the window was verified (a
+// corner of a drive, a gap in the photos) the path breaks, and its pieces have no common frame.
+std::vector<ViewGraph> CapturePathPieces(const ViewGraph& path);
+
+// The bound of a capture-path check for an edge m places apart: the larger of `min_deg` and three
+// times the drift a random walk of the path edges' median residual s reaches over m places,
+// 3 s sqrt(m).
+double CapturePathBoundDeg(double min_deg, double path_residual_deg, size_t places_apart);
 
 // "auto", "sequential", "unordered".
 const char* CaptureOrderUseName(CaptureOrderOptions::Use use);

@@ -1,15 +1,11 @@
 #include "sfm_pruning/pruning/capture_path_directions.hpp"
 
-#include <algorithm>
-#include <cmath>
 #include <map>
-#include <set>
 #include <utility>
 #include <vector>
 
 #include "sfm_pruning/sfm/pose.hpp"
 #include "sfm_pruning/util/statistics.hpp"
-#include "sfm_pruning/view_graph/components.hpp"
 
 namespace sfm_pruning {
 namespace {
@@ -34,13 +30,10 @@ CapturePathDirectionCheck CheckDirectionsAgainstCapturePath(const CaptureOrderOp
   check.num_path_edges = path.NumValidEdges();
   if (check.num_path_edges == 0) return check;
 
-  // Each piece of the path solved on its own, in its own frame (a break in the path leaves its
-  // pieces no common frame; capture_path_rotations.hpp).
+  // Each piece of the path solved on its own, in its own frame (CapturePathPieces).
   std::map<IndexT, Pose> poses;
   std::map<IndexT, size_t> piece_of;
-  for (const NodeGroup& component : ConnectedComponents(path)) {
-    if (component.size() < 3) break;  // largest first: the rest are pairs and single views
-    const ViewGraph piece_graph = path.InducedSubgraph(std::set<IndexT>(component.begin(), component.end()));
+  for (const ViewGraph& piece_graph : CapturePathPieces(path)) {
     SfmData model;
     GlobalEngineReport report;
     RunGlobalEngine(engine, piece_graph, views_and_intrinsics, features, &model, &report);
@@ -74,8 +67,8 @@ CapturePathDirectionCheck CheckDirectionsAgainstCapturePath(const CaptureOrderOp
 
   for_each_posed_edge(graph, [&](const ViewPair& pair, size_t apart, double deviation) {
     if (apart <= options.path_window_views) return;  // the path's own edges made the model
-    const double drift = 3.0 * check.path_residual_deg * std::sqrt(static_cast<double>(apart));
-    const double bound = std::max(options.path_max_direction_deviation_deg, drift);
+    const double bound =
+        CapturePathBoundDeg(options.path_max_direction_deviation_deg, check.path_residual_deg, apart);
     if (deviation > bound) check.removed.push_back({pair, apart, deviation, bound});
   });
   return check;

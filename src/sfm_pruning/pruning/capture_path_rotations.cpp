@@ -1,9 +1,6 @@
 #include "sfm_pruning/pruning/capture_path_rotations.hpp"
 
-#include <algorithm>
-#include <cmath>
 #include <map>
-#include <set>
 #include <utility>
 #include <vector>
 
@@ -12,7 +9,6 @@
 #include "sfm_pruning/global/rotation_averaging.hpp"
 #include "sfm_pruning/sfm/pose.hpp"
 #include "sfm_pruning/util/statistics.hpp"
-#include "sfm_pruning/view_graph/components.hpp"
 
 namespace sfm_pruning {
 namespace {
@@ -33,18 +29,14 @@ CapturePathRotationCheck CheckAgainstCapturePath(const CaptureOrderOptions& opti
   check.num_path_edges = path.NumValidEdges();
   if (check.num_path_edges == 0) return check;
 
-  // Each piece of the path on its own: where no pair within the window was verified (a corner of a
-  // drive, a gap in the photos) the path breaks, and its pieces have no common frame. A piece's
-  // rotations come from the engine's robust averaging (L1, then Geman-McClure, its filter removing
+  // Each piece of the path on its own (CapturePathPieces). A piece's rotations come from the engine's robust averaging (L1, then Geman-McClure, its filter removing
   // the path edges that disagree with the others: a twin pair between neighbours is outvoted by its
   // neighbours); the residual scale s is the median over the pieces' path edges.
   std::map<IndexT, Eigen::Matrix3d> rotations;
   std::map<IndexT, size_t> piece_of;
   std::vector<double> residuals;
   size_t piece = 0;
-  for (const NodeGroup& component : ConnectedComponents(path)) {
-    if (component.size() < 3) break;  // largest first: the rest are pairs and single views
-    ViewGraph piece_graph = path.InducedSubgraph(std::set<IndexT>(component.begin(), component.end()));
+  for (ViewGraph& piece_graph : CapturePathPieces(path)) {
     std::map<IndexT, Eigen::Matrix3d> piece_rotations;
     const RotationAveragingResult averaged =
         EstimateGlobalRotations(&piece_graph, RotationAveragingOptions(), &piece_rotations);
@@ -74,8 +66,7 @@ CapturePathRotationCheck CheckAgainstCapturePath(const CaptureOrderOptions& opti
     if (piece_of.at(pair.first) != piece_of.at(pair.second)) return;  // no common frame
     const size_t apart = order.PlacesApart(pair.first, pair.second);
     const double deviation = DeviationDeg(edge, ri->second, rj->second);
-    const double drift = 3.0 * check.path_residual_deg * std::sqrt(static_cast<double>(apart));
-    const double bound = std::max(options.path_max_deviation_deg, drift);
+    const double bound = CapturePathBoundDeg(options.path_max_deviation_deg, check.path_residual_deg, apart);
     if (deviation > bound) check.removed.push_back({pair, apart, deviation, bound});
   });
   return check;
