@@ -29,9 +29,10 @@ CapturePathRotationCheck CheckAgainstCapturePath(const CaptureOrderOptions& opti
   check.num_path_edges = path.NumValidEdges();
   if (check.num_path_edges == 0) return check;
 
-  // Each piece of the path on its own (CapturePathPieces). A piece's rotations come from the engine's robust averaging (L1, then Geman-McClure, its filter removing
-  // the path edges that disagree with the others: a twin pair between neighbours is outvoted by its
-  // neighbours); the residual scale s is the median over the pieces' path edges.
+  // Each piece of the path on its own (CapturePathPieces). A piece's rotations come from the
+  // engine's robust averaging (L1, then Geman-McClure, its filter removing the path edges that
+  // disagree with the others: a twin pair between neighbours is outvoted by its neighbours); the
+  // residual scale s is the median over the pieces' path edges.
   std::map<IndexT, Eigen::Matrix3d> rotations;
   std::map<IndexT, size_t> piece_of;
   std::vector<double> residuals;
