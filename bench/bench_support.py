@@ -1,5 +1,5 @@
 """The shared library of bench/. Each script of bench/ is the one entry point of one table
-(run_benchmarks.py: the engine-by-scene table of docs/benchmarks.md; every other script: one
+(run_benchmarks.py: the engine-by-scene tables of docs/benchmarks*.md; every other script: one
 fragment bench/sections/<name>.md); each imports this module, and bench_colmap.py for COLMAP's
 files and camera geometry, and no script imports another. Python 3 standard library only.
 
@@ -33,7 +33,7 @@ from pathlib import Path
 import bench_colmap as bc
 
 REPO = Path(__file__).resolve().parent.parent
-SECTIONS_DIR = REPO / "bench" / "sections"  # the fragments docs/benchmarks.md appends
+SECTIONS_DIR = REPO / "bench" / "sections"  # the fragments the pages of docs/benchmarks.md append
 THRESHOLDS = [3, 5, 10]
 COLMAP_CAMERA_MODEL = "SIMPLE_RADIAL"
 
@@ -425,5 +425,5 @@ def write_fragment(name, lines):
     path = SECTIONS_DIR / f"{name}.md"
     path.parent.mkdir(parents=True, exist_ok=True)
     path.write_text("\n".join(lines).rstrip("\n") + "\n")
-    print(f"wrote {path} (refresh docs/benchmarks.md: python3 bench/run_benchmarks.py --rewrite_report)")
+    print(f"wrote {path} (refresh docs/benchmarks*.md: python3 bench/run_benchmarks.py --rewrite_report)")
     return path
