@@ -93,12 +93,23 @@ bool AverageRotations(const GlobalEngineOptions& options, const ViewGraph& graph
   return true;
 }
 
-// 2. Tracks of `kept` (min length 2 for graphs of at most 3 views).
-bool BuildEngineTracks(const GlobalEngineOptions& options, const ViewGraph& kept, size_t num_views,
-                       GlobalEngineReport* report, TrackBuildingOptions* track_options, TrackBuildingResult* tracks) {
+// 2. Tracks of `kept` (min length 3; 2 for graphs of at most 3 views), from the links the depth
+// votes keep (link_depth_votes.hpp).
+bool BuildEngineTracks(const GlobalEngineOptions& options, const ViewGraph& kept, const SfmData& views_and_intrinsics,
+                       const FeaturesPerView& features, size_t num_views, GlobalEngineReport* report,
+                       TrackBuildingOptions* track_options, TrackBuildingResult* tracks) {
   *track_options = options.tracks;
   if (num_views <= 3) track_options->min_track_length = std::min<size_t>(track_options->min_track_length, 2);
-  Timed("tracks", report, [&]() { *tracks = BuildTracks(kept, *track_options); });
+  Timed("tracks", report, [&]() {
+    if (!options.link_depth_votes.enabled) {
+      *tracks = BuildTracks(kept, *track_options);
+      return;
+    }
+    const LinkDepthVoteResult votes =
+        DropDepthInconsistentLinks(options.link_depth_votes, kept, views_and_intrinsics, features);
+    report->num_depth_inconsistent_links = votes.num_dropped_links;
+    *tracks = BuildTracks(votes.graph, *track_options);
+  });
   report->num_tracks = tracks->tracks.size();
   report->track_counts = *tracks;
   report->track_counts.tracks.clear();
@@ -202,7 +213,9 @@ bool RunStages(const GlobalEngineOptions& options, const ViewGraph& graph, const
   if (!AverageRotations(options, graph, report, dropped, &rotations, &kept, progress)) return false;
   TrackBuildingOptions track_options;
   TrackBuildingResult tracks;
-  if (!BuildEngineTracks(options, kept, rotations.size(), report, &track_options, &tracks)) return false;
+  if (!BuildEngineTracks(options, kept, *out, features, rotations.size(), report, &track_options, &tracks)) {
+    return false;
+  }
   if (!PositionViews(options, kept, rotations, tracks.tracks, track_options.min_track_length, features, out, report,
                      progress)) {
     return false;
@@ -234,7 +247,9 @@ bool RunRefinementStages(const GlobalEngineOptions& options, const ViewGraph& gr
   report->num_rotation_edges = kept.NumValidEdges();
   TrackBuildingOptions track_options;
   TrackBuildingResult tracks;
-  if (!BuildEngineTracks(options, kept, posed.size(), report, &track_options, &tracks)) return false;
+  if (!BuildEngineTracks(options, kept, initial, features, posed.size(), report, &track_options, &tracks)) {
+    return false;
+  }
   Timed("triangulation from the poses", report, [&]() {
     report->positioning =
         TriangulateFromPoses(options.global_positioning, rotations, centers, tracks.tracks, features, out);
@@ -304,6 +319,7 @@ void RefineGlobalModel(const GlobalEngineOptions& options, const ViewGraph& grap
 void GlobalEngineOptions::Check() const {
   rotation.Check();
   tracks.Check();
+  link_depth_votes.Check();
   global_positioning.Check();
   translation_averaging.Check();
   bundle.Check();

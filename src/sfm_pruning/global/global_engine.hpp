@@ -1,7 +1,8 @@
 // The GLOBAL engine (METHOD.md §2): a verified view graph -> posed cameras and landmarks.
 //
 //   rotation averaging (filters edges > 10 deg, keeps the largest component)
-//   -> tracks (min length 3; 2 for graphs of at most 3 views)
+//   -> tracks (min length 3; 2 for graphs of at most 3 views) from the links whose depth the
+//      features' other links confirm (link_depth_votes.hpp)
 //   -> positioning: global positioning (GLOMAP, default; solved on the tracks or on match stars)
 //      or translation averaging
 //   -> num_bundle_rounds x (bundle adjustment -> structure filtering -> retriangulation), the
@@ -23,6 +24,7 @@
 #include "sfm_pruning/global/bundle_adjustment.hpp"
 #include "sfm_pruning/global/distortion_evidence.hpp"
 #include "sfm_pruning/global/global_positioning.hpp"
+#include "sfm_pruning/global/link_depth_votes.hpp"
 #include "sfm_pruning/global/match_star_tracks.hpp"
 #include "sfm_pruning/global/retriangulation.hpp"
 #include "sfm_pruning/global/rotation_averaging.hpp"
@@ -54,6 +56,8 @@ struct GlobalEngineOptions {
   RotationAveragingOptions rotation;  // max_relative_rotation_error_deg = 10
   // min_track_length = 3, lowered to 2 when the rotation averaging keeps at most 3 views.
   TrackBuildingOptions tracks;
+  // Links (inlier matches) whose depth the feature's other links contradict stay out of the tracks.
+  LinkDepthVoteOptions link_depth_votes;
   PositioningMethod positioning = PositioningMethod::kGlobalPositioning;
   GlobalPositioningOptions global_positioning;
   PositioningTracks positioning_tracks = PositioningTracks::kConnected;  // global positioning only
@@ -149,6 +153,7 @@ struct GlobalEngineReport {
   size_t num_input_edges = 0;       // valid edges of the input graph
   size_t num_rotation_edges = 0;    // valid edges between the views kept by rotation averaging
   size_t num_filtered_edges = 0;    // invalidated by the rotation filter
+  size_t num_depth_inconsistent_links = 0;  // kept out of the tracks by link_depth_votes
   size_t num_tracks = 0;
   size_t num_registered_views = 0;  // posed views of the output
   size_t num_landmarks = 0;

@@ -43,6 +43,7 @@ struct Solution {
 void SetPositioning(const ReconstructionOptions& options, GlobalEngineOptions* engine) {
   engine->positioning = options.positioning;
   engine->positioning_tracks = options.positioning_tracks;
+  engine->link_depth_votes.enabled = options.link_depth_votes;
   engine->positioning_random_starts = options.positioning_random_starts;
   engine->positioning_start_screening_iterations = options.positioning_start_screening_iterations;
 }
@@ -183,6 +184,7 @@ PrunedGlobalEngineOptions PrunedEngineOptions(const ReconstructionOptions& optio
   SetPositioning(options, &pruned.engine);
   pruned.pruning.partition.engine.positioning = options.positioning;
   pruned.pruning.partition.engine.positioning_tracks = options.positioning_tracks;
+  pruned.pruning.partition.engine.link_depth_votes.enabled = options.link_depth_votes;
   pruned.SetSeedAndThreads(options.seed, options.ResolvedThreads(), options.solver_threads);
   return pruned;
 }

@@ -51,6 +51,8 @@ struct ReconstructionOptions {
   int solver_threads = 1;
   PositioningMethod positioning = PositioningMethod::kGlobalPositioning;
   PositioningTracks positioning_tracks = PositioningTracks::kConnected;
+  // GlobalEngineOptions::link_depth_votes.enabled of every solve (link_depth_votes.hpp).
+  bool link_depth_votes = true;
   // Random starts of the positioning solve (GLOBAL_PRUNED: of its solve of the pruned graph),
   // each screened for this many iterations (docs/global.md, "Random starts"; GLOMAP: 1 start).
   int positioning_random_starts = 3;

@@ -87,6 +87,7 @@ nlohmann::json TimingsJson(const EngineSettings& settings, const sfm_pruning::Vi
   json["engine"] = settings.engine;
   json["positioning"] = settings.positioning;
   json["positioning_tracks"] = settings.positioning_tracks;
+  json["link_depth_votes"] = settings.link_depth_votes;
   json["positioning_random_starts"] = settings.positioning_random_starts;
   json["positioning_start_screening"] = settings.positioning_start_screening;
   json["max_epipolar_error_deg"] = settings.max_epipolar_error_deg;
@@ -116,6 +117,7 @@ nlohmann::json TimingsJson(const EngineSettings& settings, const sfm_pruning::Vi
                     {"edges_in", engine.num_input_edges},
                     {"edges_after_rotation_filter", engine.num_rotation_edges},
                     {"edges_filtered_by_rotation", engine.num_filtered_edges},
+                    {"depth_inconsistent_links", engine.num_depth_inconsistent_links},
                     {"tracks", engine.num_tracks},
                     {"registered_views", engine.num_registered_views},
                     {"landmarks", engine.num_landmarks},
@@ -233,6 +235,7 @@ sfm_pruning::ReconstructionOptions ToReconstructionOptions(const EngineSettings&
                                                          : sfm_pruning::PositioningMethod::kTranslationAveraging;
   options.positioning_tracks = settings.positioning_tracks == "MATCH_STARS" ? sfm_pruning::PositioningTracks::kMatchStars
                                                                              : sfm_pruning::PositioningTracks::kConnected;
+  options.link_depth_votes = settings.link_depth_votes;
   options.positioning_random_starts = settings.positioning_random_starts;
   options.positioning_start_screening_iterations = settings.positioning_start_screening;
   options.max_epipolar_error_deg = settings.max_epipolar_error_deg;
@@ -270,6 +273,11 @@ void AddSolverOptions(CLI::App* cmd, EngineSettings* settings) {
                   "copies of a repeated texture misplaces one observation instead of merging two tracks; "
                   "docs/global.md)")
       ->check(CLI::IsMember({"CONNECTED", "MATCH_STARS"}))
+      ->capture_default_str()
+      ->group(kExpertOptionsGroup);
+  cmd->add_option("--link_depth_votes", settings->link_depth_votes,
+                  "Keep out of the tracks the inlier matches whose depth the feature's other matches contradict "
+                  "(a match between copies of a repeated texture along the baseline; docs/global.md)")
       ->capture_default_str()
       ->group(kExpertOptionsGroup);
   cmd->add_option("--positioning_random_starts", settings->positioning_random_starts,

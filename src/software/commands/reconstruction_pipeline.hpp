@@ -27,6 +27,7 @@ struct EngineSettings {
   int solver_threads = 1;  // ReconstructionOptions::solver_threads
   std::string positioning = "GLOMAP";  // or TRANSLATION_AVERAGING
   std::string positioning_tracks = "CONNECTED";  // or MATCH_STARS
+  bool link_depth_votes = true;  // ReconstructionOptions::link_depth_votes
   // Three starts, each screened for 25 iterations (docs/global.md, "Random starts"), as
   // ReconstructionOptions; GlobalEngineOptions used alone has GLOMAP's single start.
   int positioning_random_starts = 3;  // GlobalEngineOptions::positioning_random_starts
