@@ -2,14 +2,15 @@
 
 #include <algorithm>
 #include <cmath>
-#include <limits>
 #include <map>
+#include <optional>
 #include <tuple>
 #include <utility>
 #include <vector>
 
 #include <Eigen/Core>
 
+#include "sfm_pruning/geometry/triangulation.hpp"
 #include "sfm_pruning/sfm/pose.hpp"
 #include "sfm_pruning/util/option_checks.hpp"
 #include "sfm_pruning/util/statistics.hpp"
@@ -38,21 +39,16 @@ struct LinkDepths {
   double parallax_rad = 0.0;
 };
 
-// Inverse depths of one match in both views (distances along the unit rays, baseline |t| = 1) by
-// the midpoint of the closest points of the two rays, and the angle between the rays. Parallel
-// rays: 0 (at infinity); negative: behind that camera.
+// Inverse depths of one match in both views (distances along the unit rays, baseline |t| = 1) from
+// the two-view midpoint triangulation, and the angle between the rays. Parallel rays: 0 (at
+// infinity); negative: behind that camera.
 LinkDepths Triangulate(const RelativePose& pose, const Eigen::Vector3d& ray_first, const Eigen::Vector3d& ray_second) {
-  const Eigen::Vector3d center_second = pose.CenterOfJInI();
-  const Eigen::Vector3d ray_second_in_first = pose.rotation.transpose() * ray_second;
-  const double cosine = std::clamp(ray_first.dot(ray_second_in_first), -1.0, 1.0);
-  const double det = 1.0 - cosine * cosine;
   LinkDepths depths;
-  depths.parallax_rad = std::acos(cosine);
-  if (det < 1e-14) return depths;
-  const double along_first = ray_first.dot(center_second);
-  const double along_second = ray_second_in_first.dot(center_second);
-  depths.rho_first = det / (along_first - cosine * along_second);
-  depths.rho_second = det / (cosine * along_first - along_second);
+  depths.parallax_rad = AngleBetweenVectors(ray_first, pose.rotation.transpose() * ray_second);
+  if (const std::optional<TwoViewPoint> point = TriangulateTwoView(pose, ray_first, ray_second, 1e-7)) {
+    depths.rho_first = 1.0 / point->depth_i;
+    depths.rho_second = 1.0 / point->depth_j;
+  }
   return depths;
 }
 
@@ -95,18 +91,12 @@ void AddLinkEnds(const LinkDepthVoteOptions& options, const ViewPair& pair, size
 std::vector<LinkEnd> CollectLinkEnds(const LinkDepthVoteOptions& options, const std::vector<ViewPair>& pairs,
                                      const ViewGraph& graph, const SfmData& views_and_intrinsics,
                                      const FeaturesPerView& features) {
-  auto intrinsics_of = [&](IndexT view_id) -> const CameraIntrinsics* {
-    const auto view = views_and_intrinsics.views.find(view_id);
-    if (view == views_and_intrinsics.views.end()) return nullptr;
-    const auto intrinsics = views_and_intrinsics.intrinsics.find(view->second.id_intrinsic);
-    return intrinsics == views_and_intrinsics.intrinsics.end() ? nullptr : &intrinsics->second;
-  };
   std::vector<LinkEnd> ends;
   for (size_t edge_index = 0; edge_index < pairs.size(); ++edge_index) {
     const ViewPair& pair = pairs[edge_index];
     const ViewGraphEdge& edge = *graph.FindEdge(pair.first, pair.second);
-    const CameraIntrinsics* first = intrinsics_of(pair.first);
-    const CameraIntrinsics* second = intrinsics_of(pair.second);
+    const CameraIntrinsics* first = views_and_intrinsics.FindIntrinsics(pair.first);
+    const CameraIntrinsics* second = views_and_intrinsics.FindIntrinsics(pair.second);
     const auto first_features = features.find(pair.first);
     const auto second_features = features.find(pair.second);
     if (first == nullptr || second == nullptr || first_features == features.end() ||
@@ -115,7 +105,7 @@ std::vector<LinkEnd> CollectLinkEnds(const LinkDepthVoteOptions& options, const 
     }
     std::vector<LinkDepths> depths(edge.matches.size());
     bool usable = true;
-    for (size_t k = 0; k < edge.matches.size() && usable; ++k) {
+    for (size_t k = 0; k < edge.matches.size(); ++k) {
       const FeatureMatch& match = edge.matches[k];
       if (match.i >= first_features->second.size() || match.j >= second_features->second.size()) {
         usable = false;
